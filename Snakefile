@@ -1,0 +1,32 @@
+# Reproduction of three papers on disordered structure; see README.md.
+#
+#   snakemake                      everything that exists, paper-fidelity config
+#   snakemake --configfile config/quick.yaml        same DAG, small parameters
+#   snakemake debye2020            one paper (named targets: README.md)
+#
+# The merged config is validated against workflow/schemas/config.schema.yaml
+# (defaults filled in) before any job is scheduled.
+
+from pathlib import Path
+
+from randmedia.config import validate_config
+
+
+configfile: "config/config.yaml"
+
+
+validate_config(config, Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml")
+
+
+include: "workflow/rules/common.smk"
+include: "workflow/rules/debye2020.smk"
+include: "workflow/rules/mrj2016.smk"
+include: "workflow/rules/sphere2019.smk"
+
+
+rule all:
+    default_target: True
+    input:
+        DEBYE2020_TARGETS,
+        MRJ2016_TARGETS,
+        SPHERE2019_TARGETS,

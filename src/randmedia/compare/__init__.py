@@ -1,0 +1,70 @@
+"""Our values against published (or exact) ones, with tolerances from statistics.
+
+A comparison row has the columns of :data:`COLUMNS`. The tolerance is
+
+    tolerance = k_sigma * sqrt(ours_sem^2 + published_err^2) + systematic,
+
+with ``ours_sem`` our standard error of the mean over samples,
+``published_err`` the error the paper quotes (0 when it quotes none, and for
+exact results), and ``systematic`` a margin whose origin the caller states
+(e.g. a bias bound computed from theory). ``passed`` is exactly
+``|ours - published| <= tolerance``; a missing value (NaN) never passes.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+from typing import Iterable, Mapping
+
+import pandas as pd
+
+COLUMNS = ("quantity", "key", "published", "ours", "ours_sem", "tolerance", "passed")
+
+
+def tolerance(ours_sem: float, *, k_sigma: float, published_err: float = 0.0,
+              systematic: float = 0.0) -> float:
+    """k_sigma x combined statistical error + systematic margin."""
+    if k_sigma <= 0:
+        raise ValueError(f"k_sigma must be > 0, got {k_sigma}")
+    if systematic < 0 or published_err < 0:
+        raise ValueError("published_err and systematic must be >= 0")
+    return k_sigma * math.hypot(ours_sem, published_err) + systematic
+
+
+def compare(quantity: str, key: str, published: float, ours: float, ours_sem: float, *,
+            k_sigma: float, published_err: float = 0.0, systematic: float = 0.0) -> dict:
+    """One comparison row (a dict with the keys of :data:`COLUMNS`)."""
+    tol = tolerance(ours_sem, k_sigma=k_sigma, published_err=published_err, systematic=systematic)
+    deviation = abs(ours - published)
+    return {
+        "quantity": quantity,
+        "key": key,
+        "published": float(published),
+        "ours": float(ours),
+        "ours_sem": float(ours_sem),
+        "tolerance": float(tol),
+        "passed": bool(deviation <= tol),  # False for NaN
+    }
+
+
+def comparison_frame(rows: Iterable[Mapping]) -> pd.DataFrame:
+    """Rows as a DataFrame with exactly the columns of :data:`COLUMNS`, in order."""
+    frame = pd.DataFrame(list(rows), columns=list(COLUMNS))
+    if frame[list(COLUMNS)].isna().any().any() and not frame.empty:
+        missing = frame.columns[frame.isna().any()].tolist()
+        if set(missing) - {"ours", "ours_sem"}:
+            raise ValueError(f"comparison rows lack values in columns {missing}")
+    return frame
+
+
+def read_reference(path: str | Path, required_columns: Iterable[str]) -> pd.DataFrame:
+    """Read a published-values CSV from ``config/reference/``, checking its columns."""
+    path = Path(path)
+    if not path.is_file():
+        raise FileNotFoundError(f"{path}: reference table does not exist")
+    frame = pd.read_csv(path)
+    missing = [c for c in required_columns if c not in frame.columns]
+    if missing:
+        raise ValueError(f"{path}: missing columns {missing} (has {list(frame.columns)})")
+    return frame

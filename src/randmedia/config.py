@@ -1,0 +1,102 @@
+"""Validation of the study configuration before any job runs.
+
+:func:`validate_config` checks the merged Snakemake config against the JSON
+schema ``workflow/schemas/config.schema.yaml`` (filling the schema's
+defaults in place) and then the constraints that relate several keys, which a
+schema cannot express. Every problem is reported as one line naming the
+config key (dotted path) and what was expected.
+"""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any, MutableMapping
+
+import jsonschema
+import yaml
+
+
+class ConfigError(ValueError):
+    """The configuration is invalid; the message names each offending key."""
+
+
+def _with_default_filling(validator_class):
+    """Extend a jsonschema validator so that ``default`` values are inserted."""
+    validate_properties = validator_class.VALIDATORS["properties"]
+
+    def set_defaults(validator, properties, instance, schema):
+        if isinstance(instance, dict):
+            for name, subschema in properties.items():
+                if "default" in subschema and name not in instance:
+                    instance[name] = _copy(subschema["default"])
+        yield from validate_properties(validator, properties, instance, schema)
+
+    return jsonschema.validators.extend(validator_class, {"properties": set_defaults})
+
+
+def _copy(value):
+    return yaml.safe_load(yaml.safe_dump(value))
+
+
+_Validator = _with_default_filling(jsonschema.Draft202012Validator)
+
+
+def _dotted(path) -> str:
+    return ".".join(str(p) for p in path) or "<top level>"
+
+
+def _describe(error: jsonschema.ValidationError) -> str:
+    """One line naming the offending key for a schema violation."""
+    where = list(error.absolute_path)
+    if error.validator == "required":
+        missing = error.message.split("'")[1]
+        return f"config key '{_dotted(where + [missing])}' is required but missing"
+    if error.validator == "additionalProperties":
+        allowed = sorted(error.schema.get("properties", {}))
+        unknown = sorted(set(error.instance) - set(allowed))
+        return "; ".join(
+            f"config key '{_dotted(where + [name])}' is unknown (allowed here: {', '.join(allowed)})"
+            for name in unknown
+        )
+    expected = error.schema.get("description")
+    hint = f" ({expected})" if expected and error.validator in ("type", "minimum") else ""
+    return f"config key '{_dotted(where)}': {error.message}{hint}"
+
+
+def _cross_checks(config: dict) -> list[str]:
+    """Constraints between keys; run only on a schema-valid config."""
+    problems = []
+    disks = config["debye2020"]["overlapping_disks"]
+    side, radius = disks["L"], disks["radius"]
+    r_max = disks["s2_r_max_over_R"] * radius
+    if r_max >= side / 2:
+        problems.append(
+            "config key 'debye2020.overlapping_disks.radius': S2 is wanted out to "
+            f"s2_r_max_over_R * radius = {r_max:g} pixels, which must be < L/2 = {side / 2:g} "
+            "(beyond half the periodic image a distance is not unique); "
+            "use a smaller radius or s2_r_max_over_R, or a larger L"
+        )
+    if disks["compare_r_max_over_R"] > disks["s2_r_max_over_R"]:
+        problems.append(
+            "config key 'debye2020.overlapping_disks.compare_r_max_over_R': "
+            f"{disks['compare_r_max_over_R']:g} exceeds s2_r_max_over_R = "
+            f"{disks['s2_r_max_over_R']:g} (cannot compare bins that are not computed)"
+        )
+    return problems
+
+
+def load_schema(path: str | Path) -> dict:
+    with open(path) as handle:
+        return yaml.safe_load(handle)
+
+
+def validate_config(config: MutableMapping[str, Any], schema_path: str | Path) -> MutableMapping:
+    """Validate ``config`` in place (defaults filled); raise :class:`ConfigError` if invalid."""
+    validator = _Validator(load_schema(schema_path))
+    errors = sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.absolute_path)))
+    problems = [_describe(e) for e in errors]
+    if not problems:
+        problems = _cross_checks(config)
+    if problems:
+        raise ConfigError("invalid configuration:\n  " + "\n  ".join(problems))
+    return config

@@ -1,0 +1,1 @@
+"""Structural descriptors of configurations, returned as xarray Datasets."""

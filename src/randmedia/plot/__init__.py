@@ -1,0 +1,1 @@
+"""Figures: one style (:mod:`randmedia.plot.style`) and per-paper figure functions."""

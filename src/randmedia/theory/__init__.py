@@ -1,0 +1,1 @@
+"""Closed-form results used as exact references and as the papers' formulas."""
