@@ -58,9 +58,27 @@ def _describe(error: jsonschema.ValidationError) -> str:
             f"config key '{_dotted(where + [name])}' is unknown (allowed here: {', '.join(allowed)})"
             for name in unknown
         )
-    expected = error.schema.get("description")
-    hint = f" ({expected})" if expected and error.validator in ("type", "minimum") else ""
-    return f"config key '{_dotted(where)}': {error.message}{hint}"
+    bounds = {"minimum": ">=", "exclusiveMinimum": ">", "maximum": "<=", "exclusiveMaximum": "<"}
+    if error.validator in bounds:
+        problem = f"must be {bounds[error.validator]} {error.validator_value}, got {error.instance!r}"
+    elif error.validator == "type":
+        problem = f"must be of type {error.validator_value}, got {error.instance!r}"
+        if isinstance(error.instance, str) and _looks_numeric(error.instance):
+            problem += (" (snakemake --config passes values nested in {...} as text; "
+                        "put the change in a config file and add it with --configfile)")
+    else:
+        problem = error.message
+    meaning = error.schema.get("description", "")
+    hint = f" -- {meaning.split('. ')[0]}" if meaning and error.schema.get("type") != "object" else ""
+    return f"config key '{_dotted(where)}' {problem}{hint}"
+
+
+def _looks_numeric(text: str) -> bool:
+    try:
+        float(text)
+    except ValueError:
+        return False
+    return True
 
 
 def _cross_checks(config: dict) -> list[str]:
@@ -75,6 +93,12 @@ def _cross_checks(config: dict) -> list[str]:
             f"s2_r_max_over_R * radius = {r_max:g} pixels, which must be < L/2 = {side / 2:g} "
             "(beyond half the periodic image a distance is not unique); "
             "use a smaller radius or s2_r_max_over_R, or a larger L"
+        )
+    if r_max + 2 * radius > side:
+        problems.append(
+            "config key 'debye2020.overlapping_disks.radius': on the periodic image the exact "
+            f"Eqs. (32)-(33) hold for r <= L - 2R; need s2_r_max_over_R * R + 2R = "
+            f"{r_max + 2 * radius:g} <= L = {side}"
         )
     if disks["compare_r_max_over_R"] > disks["s2_r_max_over_R"]:
         problems.append(

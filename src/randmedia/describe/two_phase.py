@@ -77,7 +77,7 @@ def periodic_autocorrelation(indicator: np.ndarray) -> np.ndarray:
     field = np.asarray(indicator, dtype=np.float64)
     spectrum = np.fft.rfftn(field)
     power = spectrum.real**2 + spectrum.imag**2
-    return np.fft.irfftn(power, s=field.shape) / field.size
+    return np.fft.irfftn(power, s=field.shape, axes=tuple(range(field.ndim))) / field.size
 
 
 def two_point_function(

@@ -19,7 +19,7 @@ def overlapping_disks_s2(s2: xr.Dataset, *, radius: float, phi2: float, compare_
     """
     r = s2["r"].values
     x = r / radius
-    fig, (top, bottom) = figure(nrows=2, ncols=1, aspect=1.2, sharex=True,
+    fig, (top, bottom) = figure(nrows=2, ncols=1, aspect=0.55, sharex=True,
                                 gridspec_kw={"height_ratios": [2.2, 1]})
     fine = np.linspace(0.0, x.max(), 600)
     exact_fine = s2_void(fine * radius, radius, phi2)

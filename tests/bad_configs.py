@@ -1,0 +1,80 @@
+"""Invalid configurations, each with the config key its error message must name.
+
+Each case mutates a copy of config/quick.yaml. Used by test_config.py (the
+validator directly) and test_workflow.py (Snakemake must refuse them before
+any job runs).
+"""
+
+from __future__ import annotations
+
+import copy
+from pathlib import Path
+
+import yaml
+
+QUICK = Path(__file__).resolve().parents[1] / "config" / "quick.yaml"
+
+
+def _set(path, value):
+    def mutate(cfg):
+        node = cfg
+        for key in path[:-1]:
+            node = node[key]
+        node[path[-1]] = value
+    return mutate
+
+
+def _delete(path):
+    def mutate(cfg):
+        node = cfg
+        for key in path[:-1]:
+            node = node[key]
+        del node[path[-1]]
+    return mutate
+
+
+DISKS = ("debye2020", "overlapping_disks")
+
+#: (case id, mutation, text the error message must contain)
+BAD_CONFIGS = [
+    ("L_zero", _set(DISKS + ("L",), 0), "debye2020.overlapping_disks.L"),
+    ("L_negative", _set(DISKS + ("L",), -201), "debye2020.overlapping_disks.L"),
+    ("L_string", _set(DISKS + ("L",), "201"), "debye2020.overlapping_disks.L"),
+    ("L_float", _set(DISKS + ("L",), 201.5), "debye2020.overlapping_disks.L"),
+    ("L_bool", _set(DISKS + ("L",), True), "debye2020.overlapping_disks.L"),
+    ("radius_zero", _set(DISKS + ("radius",), 0), "debye2020.overlapping_disks.radius"),
+    ("radius_negative", _set(DISKS + ("radius",), -6.0), "debye2020.overlapping_disks.radius"),
+    ("radius_vs_L", _set(DISKS + ("radius",), 20.0), "debye2020.overlapping_disks.radius"),
+    ("radius_wraps_torus", lambda c: c["debye2020"]["overlapping_disks"].update(
+        radius=70.0, s2_r_max_over_R=1.0, compare_r_max_over_R=1.0),
+     "debye2020.overlapping_disks.radius"),
+    ("phi2_zero", _set(DISKS + ("phi2",), 0.0), "debye2020.overlapping_disks.phi2"),
+    ("phi2_one", _set(DISKS + ("phi2",), 1.0), "debye2020.overlapping_disks.phi2"),
+    ("phi2_above_one", _set(DISKS + ("phi2",), 1.3), "debye2020.overlapping_disks.phi2"),
+    ("phi2_negative", _set(DISKS + ("phi2",), -0.3), "debye2020.overlapping_disks.phi2"),
+    ("phi2_null", _set(DISKS + ("phi2",), None), "debye2020.overlapping_disks.phi2"),
+    ("n_samples_one", _set(DISKS + ("n_samples",), 1), "debye2020.overlapping_disks.n_samples"),
+    ("n_samples_fraction", _set(DISKS + ("n_samples",), 2.5), "debye2020.overlapping_disks.n_samples"),
+    ("s2_range_zero", _set(DISKS + ("s2_r_max_over_R",), 0), "debye2020.overlapping_disks.s2_r_max_over_R"),
+    ("compare_beyond_s2", _set(DISKS + ("compare_r_max_over_R",), 7.0),
+     "debye2020.overlapping_disks.compare_r_max_over_R"),
+    ("k_sigma_negative", _set(("comparison", "k_sigma"), -3.0), "comparison.k_sigma"),
+    ("seed_negative", _set(("seed",), -1), "seed"),
+    ("unknown_top_key", _set(("sead",), 1), "sead"),
+    ("unknown_nested_key", _set(DISKS + ("radious",), 6.0), "debye2020.overlapping_disks.radious"),
+    ("missing_L", _delete(DISKS + ("L",)), "debye2020.overlapping_disks.L"),
+    ("missing_seed", _delete(("seed",)), "seed"),
+    ("missing_section", _delete(("debye2020",)), "debye2020"),
+    ("section_not_mapping", _set(("debye2020",), [1, 2]), "debye2020"),
+]
+
+
+def quick_config() -> dict:
+    with open(QUICK) as handle:
+        return yaml.safe_load(handle)
+
+
+def bad_config(mutation) -> dict:
+    config = copy.deepcopy(quick_config())
+    mutation(config)
+    return config

@@ -1,0 +1,143 @@
+"""End to end through Snakemake: dry runs, config rejection, quick DAG, determinism, kill/resume.
+
+Every run happens in a copy of the workflow in a temporary folder, so the
+checkout's own results/ and .snakemake/ are never touched.
+"""
+
+from __future__ import annotations
+
+import os
+import signal
+import subprocess
+import time
+from pathlib import Path
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from bad_configs import BAD_CONFIGS, bad_config
+from conftest import copy_workflow, run_snakemake, snakemake_command
+from randmedia.compare import COLUMNS
+from randmedia.io import PROVENANCE_ATTRS, read_dataset
+
+pytestmark = pytest.mark.workflow
+
+QUICK = ("--configfile", "config/quick.yaml")
+EXPECTED_OUTPUTS = [
+    "results/debye2020/comparison.csv",
+    "results/debye2020/validation/overlapping_disks_S2.pdf",
+    "results/debye2020/validation/overlapping_disks_S2.png",
+    "results/debye2020/descriptors/overlapping_disks_phi0.3_S2.nc",
+]
+
+
+def netcdf_files(workdir: Path) -> list[Path]:
+    return sorted((workdir / "results").rglob("*.nc"))
+
+
+def assert_same_data(first: Path, second: Path) -> None:
+    """Every netCDF file and comparison.csv have identical data in both runs."""
+    files = [p.relative_to(first) for p in netcdf_files(first)]
+    assert files == [p.relative_to(second) for p in netcdf_files(second)]
+    assert files, "no netCDF outputs"
+    for relative in files:
+        a, b = read_dataset(first / relative), read_dataset(second / relative)
+        assert sorted(a.data_vars) == sorted(b.data_vars), relative
+        for name in a.variables:
+            np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=str(relative))
+        assert a.attrs["seed"] == b.attrs["seed"]
+    comparison = "results/debye2020/comparison.csv"
+    pd.testing.assert_frame_equal(pd.read_csv(first / comparison), pd.read_csv(second / comparison))
+
+
+@pytest.mark.parametrize("extra", [(), QUICK], ids=["paper", "quick"])
+def test_dry_run(tmp_path, extra):
+    workdir = copy_workflow(tmp_path)
+    result = run_snakemake(workdir, "-n", *extra)
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert "debye2020_overlapping_disks_image" in result.stdout
+    assert not (workdir / "results").exists()
+
+
+@pytest.mark.parametrize("case_id, mutation, key", BAD_CONFIGS, ids=[c[0] for c in BAD_CONFIGS])
+def test_bad_config_stops_before_any_job(tmp_path, case_id, mutation, key):
+    """The user's config/config.yaml is bad: Snakemake refuses it, naming the key, runs nothing."""
+    workdir = copy_workflow(tmp_path)
+    with open(workdir / "config" / "config.yaml", "w") as handle:
+        yaml.safe_dump(bad_config(mutation), handle)
+    result = run_snakemake(workdir, "--cores", "1")
+    assert result.returncode != 0
+    output = result.stdout + result.stderr
+    assert f"'{key}" in output, output[-2000:]
+    assert not (workdir / "results").exists()
+
+
+def test_quick_run_produces_every_target(quick_run):
+    for relative in EXPECTED_OUTPUTS:
+        assert (quick_run / relative).stat().st_size > 0, relative
+    samples = sorted((quick_run / "results/debye2020/overlapping_disks/phi0.3").glob("sample*.nc"))
+    assert len(samples) == 8
+    for path in netcdf_files(quick_run):
+        ds = read_dataset(path)
+        assert all(key in ds.attrs for key in PROVENANCE_ATTRS)
+        for name in ds.variables:
+            assert {"units", "long_name"} <= set(ds[name].attrs), (path, name)
+
+
+def test_quick_comparison_table(quick_run):
+    """Table-comparison test: overlapping-disk S2 within 3 SEM (+ bin-label bias) for r <= 4R."""
+    table = pd.read_csv(quick_run / "results/debye2020/comparison.csv")
+    assert tuple(table.columns) == COLUMNS
+    assert len(table) >= 20
+    r_over_R = table["key"].str.removeprefix("r/R=").astype(float)
+    assert r_over_R.max() <= 4.0 and r_over_R.min() == 0.0
+    deviation = (table["ours"] - table["published"]).abs()
+    assert (table["passed"] == (deviation <= table["tolerance"])).all()
+    assert (table["tolerance"] >= 3 * table["ours_sem"]).all()
+    assert table["passed"].all(), table[~table["passed"]]
+
+
+def test_same_seed_one_core_gives_identical_data(quick_run, tmp_path):
+    """Same config, 1 core instead of 2, another folder: identical data variables."""
+    workdir = copy_workflow(tmp_path)
+    result = run_snakemake(workdir, "--cores", "1", *QUICK)
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert_same_data(quick_run, workdir)
+
+
+def test_changed_parameter_reruns_only_what_it_affects(quick_run, tmp_path):
+    override = tmp_path / "override.yaml"
+    override.write_text("comparison:\n  k_sigma: 2.5\n")
+    result = run_snakemake(quick_run, "-n", "--configfile", "config/quick.yaml", str(override))
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert "debye2020_comparison" in result.stdout
+    for untouched in ("debye2020_overlapping_disks_image", "debye2020_overlapping_disks_s2",
+                      "debye2020_overlapping_disks_figure"):
+        assert f"rule {untouched}:" not in result.stdout
+    nothing = run_snakemake(quick_run, "-n", *QUICK)
+    assert "Nothing to be done" in nothing.stdout + nothing.stderr
+
+
+def test_killed_run_leaves_no_partial_output_and_rerun_completes(quick_run, tmp_path):
+    workdir = copy_workflow(tmp_path)
+    env = dict(os.environ)
+    env.pop("NUMBA_CACHE_DIR", None)
+    proc = subprocess.Popen(snakemake_command("--cores", "1", *QUICK), cwd=workdir, env=env,
+                            stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                            start_new_session=True)
+    sample_dir = workdir / "results/debye2020/overlapping_disks/phi0.3"
+    deadline = time.time() + 300
+    while time.time() < deadline and len(list(sample_dir.glob("sample*.nc"))) < 2:
+        time.sleep(0.05)
+    os.killpg(proc.pid, signal.SIGKILL)  # snakemake and its running job, no clean-up
+    proc.wait()
+    finished = list(sample_dir.glob("sample*.nc"))
+    assert 2 <= len(finished) < 8, "the kill should land mid-run"
+    for path in netcdf_files(workdir):
+        read_dataset(path)  # every file at an output path is complete
+    assert run_snakemake(workdir, "--unlock").returncode == 0
+    result = run_snakemake(workdir, "--cores", "2", *QUICK)
+    assert result.returncode == 0, result.stderr[-3000:]
+    assert_same_data(quick_run, workdir)
