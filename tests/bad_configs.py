@@ -34,6 +34,7 @@ def _delete(path):
 
 
 DISKS = ("debye2020", "overlapping_disks")
+MEDIA = ("debye2020", "media")
 
 #: (case id, mutation, text the error message must contain)
 BAD_CONFIGS = [
@@ -58,6 +59,15 @@ BAD_CONFIGS = [
     ("s2_range_zero", _set(DISKS + ("s2_r_max_over_R",), 0), "debye2020.overlapping_disks.s2_r_max_over_R"),
     ("compare_beyond_s2", _set(DISKS + ("compare_r_max_over_R",), 7.0),
      "debye2020.overlapping_disks.compare_r_max_over_R"),
+    ("media_lc_half_L", _set(MEDIA + ("lc",), 60.5), "debye2020.media.lc"),
+    ("media_a_half_L", _set(MEDIA + ("a",), 61.0), "debye2020.media.a"),
+    ("media_a_zero", _set(MEDIA + ("a",), 0.0), "debye2020.media.a"),
+    ("media_phi2_item_one", _set(MEDIA + ("phi2",), [0.1, 1.0]), "debye2020.media.phi2.1"),
+    ("media_phi2_empty", _set(MEDIA + ("phi2",), []), "debye2020.media.phi2"),
+    ("media_phi2_repeated", _set(MEDIA + ("phi2",), [0.3, 0.3]), "debye2020.media.phi2"),
+    ("media_schedule_unknown", _set(MEDIA + ("schedule", "cooling"), 0.9),
+     "debye2020.media.schedule.cooling"),
+    ("media_L_list", _set(MEDIA + ("L",), [121, 131]), "debye2020.media.L"),
     ("k_sigma_negative", _set(("comparison", "k_sigma"), -3.0), "comparison.k_sigma"),
     ("seed_negative", _set(("seed",), -1), "seed"),
     ("unknown_top_key", _set(("sead",), 1), "sead"),

@@ -30,7 +30,8 @@ EXPECTED_OUTPUTS = [
     "results/debye2020/validation/overlapping_disks_S2.pdf",
     "results/debye2020/validation/overlapping_disks_S2.png",
     "results/debye2020/descriptors/overlapping_disks_phi0.3_S2.nc",
-]
+    "results/debye2020/tables/numbers.csv",
+] + [f"results/debye2020/figures/fig{n:02d}.{ext}" for n in (1, 2) for ext in ("pdf", "png")]
 
 
 def netcdf_files(workdir: Path) -> list[Path]:
@@ -84,6 +85,22 @@ def test_quick_run_produces_every_target(quick_run):
         assert all(key in ds.attrs for key in PROVENANCE_ATTRS)
         for name in ds.variables:
             assert {"units", "long_name"} <= set(ds[name].attrs), (path, name)
+
+
+def test_quick_media_converged_and_recorded(quick_run):
+    """Every constructed medium records Delta S2 <= tolerance, and the describe step agrees."""
+    with open(quick_run / "config" / "quick.yaml") as handle:
+        media = yaml.safe_load(handle)["debye2020"]["media"]
+    for phi2 in media["phi2"]:
+        s2 = read_dataset(quick_run / f"results/debye2020/descriptors/media_phi{phi2:g}_S2.nc")
+        for k in range(media["n_samples"]):
+            sample = read_dataset(quick_run / f"results/debye2020/media/phi{phi2:g}/sample{k}.nc")
+            assert sample["phase"].dtype == np.uint8
+            assert sample["phase"].values.sum() == round(phi2 * media["L"] ** 2)
+            assert 0 < sample.attrs["delta_S2"] <= media["schedule"]["tolerance"]
+            assert sample.attrs["delta_S2"] == pytest.approx(s2["delta_S2"].values[k], abs=1e-12)
+    numbers = pd.read_csv(quick_run / "results/debye2020/tables/numbers.csv")
+    assert set(numbers["phi2"]) == set(media["phi2"]) and len(numbers) == 2 * len(media["phi2"])
 
 
 def test_quick_comparison_table(quick_run):

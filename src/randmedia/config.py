@@ -84,6 +84,13 @@ def _looks_numeric(text: str) -> bool:
 def _cross_checks(config: dict) -> list[str]:
     """Constraints between keys; run only on a schema-valid config."""
     problems = []
+    media = config["debye2020"]["media"]
+    for key in ("a", "lc"):
+        if media[key] >= media["L"] / 2:
+            problems.append(
+                f"config key 'debye2020.media.{key}': {media[key]:g} must be < L/2 = "
+                f"{media['L'] / 2:g} (beyond half the periodic image a distance is not unique)"
+            )
     disks = config["debye2020"]["overlapping_disks"]
     side, radius = disks["L"], disks["radius"]
     r_max = disks["s2_r_max_over_R"] * radius

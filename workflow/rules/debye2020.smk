@@ -1,9 +1,108 @@
 # Ma & Torquato, PRE 102, 043310 (2020): Debye random media.
 #
-# Built so far: the overlapping-disk slice of Sec. VI A -- digitized Boolean
-# model images -> S2 of the void phase (FFT estimator) -> validation figure
-# and comparison rows against the exact Eqs. (32)-(33).
-# The Debye generator, the other descriptors and Figs. 1-12 are issue #3.
+# Built so far:
+# * Sec. IV: Debye random media by the accelerated Yeong-Torquato construction
+#   -> S2 and Delta S2 per volume fraction -> Figs. 1, 2 and tables/numbers.csv;
+# * Sec. VI A slice: digitized overlapping disks -> S2 of the void phase (FFT
+#   estimator) -> validation figure and comparison rows against Eqs. (32)-(33).
+# The other descriptors, fits and Figs. 3-12 are the rest of issue #3.
+
+import re
+
+MEDIA = config["debye2020"]["media"]
+MEDIA_PHI2 = {f"{phi:g}": phi for phi in MEDIA["phi2"]}
+MEDIA_SAMPLE = "results/debye2020/media/phi{phi2}/sample{k}.nc"
+MEDIA_S2 = "results/debye2020/descriptors/media_phi{phi2}_S2.nc"
+
+
+wildcard_constraints:
+    phi2="|".join(re.escape(name) for name in MEDIA_PHI2),
+
+
+rule debye2020_media_sample:
+    """One Debye random medium (Sec. IV); checkpoints beside the output and resumes."""
+    input:
+        package_sources("generate/yeong_torquato.py", "generate/__init__.py",
+                        "theory/debye.py", "describe/two_phase.py", "seeding.py"),
+    output:
+        MEDIA_SAMPLE,
+    params:
+        phi2=lambda wildcards: MEDIA_PHI2[wildcards.phi2],
+        L=MEDIA["L"],
+        a=MEDIA["a"],
+        lc=MEDIA["lc"],
+        schedule=MEDIA["schedule"],
+        seed=config["seed"],
+    log:
+        "results/debye2020/logs/media_phi{phi2}_sample{k}.log",
+    threads: 1
+    resources:
+        mem_mb=1000,
+    script:
+        "../scripts/debye2020/media_sample.py"
+
+
+rule debye2020_media_s2:
+    """S2 of the constructions at one phi2 (mean, SEM) and Delta S2 per sample."""
+    input:
+        samples=expand(MEDIA_SAMPLE, k=range(MEDIA["n_samples"]), allow_missing=True),
+        code=package_sources("describe/two_phase.py", "theory/debye.py"),
+    output:
+        MEDIA_S2,
+    params:
+        phi2=lambda wildcards: MEDIA_PHI2[wildcards.phi2],
+        L=MEDIA["L"],
+        a=MEDIA["a"],
+        lc=MEDIA["lc"],
+    log:
+        "results/debye2020/logs/media_s2_phi{phi2}.log",
+    script:
+        "../scripts/debye2020/media_s2.py"
+
+
+rule debye2020_fig01:
+    """Fig. 1: one construction per volume fraction."""
+    input:
+        samples=expand(MEDIA_SAMPLE, phi2=MEDIA_PHI2, k=0),
+        code=package_sources("plot/style.py", "plot/debye2020.py"),
+    output:
+        pdf="results/debye2020/figures/fig01.pdf",
+        png="results/debye2020/figures/fig01.png",
+    params:
+        a=MEDIA["a"],
+    log:
+        "results/debye2020/logs/fig01.log",
+    script:
+        "../scripts/debye2020/fig01.py"
+
+
+rule debye2020_fig02:
+    """Fig. 2: S2 of the constructions against the targets."""
+    input:
+        s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
+        code=package_sources("plot/style.py", "plot/debye2020.py"),
+    output:
+        pdf="results/debye2020/figures/fig02.pdf",
+        png="results/debye2020/figures/fig02.png",
+    params:
+        lc=MEDIA["lc"],
+    log:
+        "results/debye2020/logs/fig02.log",
+    script:
+        "../scripts/debye2020/fig02.py"
+
+
+rule debye2020_numbers:
+    """tables/numbers.csv: our counterparts of the numbers quoted in the text."""
+    input:
+        s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
+        code=package_sources("compare/debye2020.py"),
+    output:
+        "results/debye2020/tables/numbers.csv",
+    log:
+        "results/debye2020/logs/numbers.log",
+    script:
+        "../scripts/debye2020/numbers.py"
 
 DISKS = config["debye2020"]["overlapping_disks"]
 DISKS_DIR = f"results/debye2020/overlapping_disks/phi{DISKS['phi2']:g}"
@@ -85,6 +184,11 @@ rule debye2020_comparison:
 
 DEBYE2020_TARGETS = [
     "results/debye2020/comparison.csv",
+    "results/debye2020/tables/numbers.csv",
+    "results/debye2020/figures/fig01.pdf",
+    "results/debye2020/figures/fig01.png",
+    "results/debye2020/figures/fig02.pdf",
+    "results/debye2020/figures/fig02.png",
     DISKS_FIGURE,
     DISKS_FIGURE.replace(".pdf", ".png"),
 ]

@@ -61,6 +61,11 @@ class RadialBinning:
         r_mean = np.bincount(bin_of, weights=distance) / counts
         return cls(shape, flat_index, bin_of, distance, counts, r_mean)
 
+    def displacements(self) -> np.ndarray:
+        """Integer lattice vectors (minimal images) of the kept displacements, shape (m, d)."""
+        index = np.unravel_index(self.flat_index, self.shape)
+        return np.stack([np.where(i > n // 2, i - n, i) for i, n in zip(index, self.shape)], axis=1)
+
     def average(self, field: np.ndarray) -> np.ndarray:
         """Bin-average of a full-size displacement field (e.g. an autocorrelation)."""
         values = field.ravel()[self.flat_index]
@@ -133,3 +138,14 @@ TWO_POINT = {
     "S2_samples": VariableSpec(("sample", "r"), "1"),
     "r": VariableSpec(("r",), "pixel"),
 }
+
+
+def s2_discrepancy(images, phase: int, target_s2, r_max: float) -> np.ndarray:
+    """Delta S2 per sample (Ma & Torquato 2020, Sec. IV): mean over bins 0 < r <= r_max of
+    |S2 - target|, the target being the exact bin average of ``target_s2`` (the S2 of
+    ``phase``), i.e. the same bins and target the Yeong-Torquato construction uses."""
+    images = np.asarray(images)
+    binning = RadialBinning.build(images.shape[1:], r_max)
+    target = binning.average_of(target_s2)
+    curves = two_point_function(images, phase, r_max)["S2_samples"].values
+    return np.abs(curves[:, 1:] - target[1:]).mean(axis=1)

@@ -41,3 +41,45 @@ def overlapping_disks_s2(s2: xr.Dataset, *, radius: float, phi2: float, compare_
     bottom.set_ylabel("(ours $-$ exact)/SEM")
     bottom.set_xlim(0, x.max())
     save_figure(fig, pdf_path)
+
+
+#: phase 1 (void) dark, phase 2 (solid) yellow, as in the paper's Fig. 1
+PHASE_COLOURS = ("#3b0f70", "#fde725")
+
+
+def fig01_media(images_by_phi2: dict, *, a: float, pdf_path) -> None:
+    """Fig. 1: one construction per volume fraction, phase 2 (solid) in yellow."""
+    from matplotlib.colors import ListedColormap
+
+    from randmedia.plot.style import PAGE_WIDTH
+
+    n = len(images_by_phi2)
+    fig, axes = figure(ncols=n, nrows=1, width=PAGE_WIDTH, aspect=1.0)
+    axes = np.atleast_1d(axes)
+    cmap = ListedColormap(PHASE_COLOURS)
+    for label, ax, (phi2, image) in zip("abcdefghij", axes, sorted(images_by_phi2.items())):
+        ax.imshow(image, cmap=cmap, vmin=0, vmax=1, interpolation="nearest", origin="lower")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_title(rf"({label}) $\phi_2 = {phi2:g}$")
+    axes[0].set_ylabel(rf"$N = {image.shape[0]}$, $a = {a:g}$ pixels")
+    save_figure(fig, pdf_path)
+
+
+def fig02_s2(s2_by_phi2: dict, *, lc: float, pdf_path) -> None:
+    """Fig. 2: S2(r) of the constructions (dashed, mean over samples) and targets (solid)."""
+    fig, ax = figure()
+    for i, (phi2, s2) in enumerate(sorted(s2_by_phi2.items(), reverse=True)):
+        keep = s2["r"].values <= lc
+        r = s2["r"].values[keep]
+        fine = np.linspace(0.0, r.max(), 400)
+        target = phi2 * phi2 + phi2 * (1 - phi2) * np.exp(-fine / float(s2.attrs["a"]))
+        ax.plot(fine, target, "k-", lw=1.0, label="target, Eq. (21)" if i == 0 else None)
+        ax.plot(r, s2["S2"].values[keep], "--", color=f"C{i}", lw=1.2,
+                label=rf"$\phi_2 = {phi2:g}$")
+    ax.set_xlabel(r"$r$ (pixels)")
+    ax.set_ylabel(r"$S_2(r)$")
+    ax.set_xlim(0, lc)
+    ax.set_ylim(0, None)
+    ax.legend(loc="upper right", ncol=2)
+    save_figure(fig, pdf_path)

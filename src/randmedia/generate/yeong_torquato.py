@@ -1,0 +1,508 @@
+"""Accelerated Yeong-Torquato construction of digitized two-phase media.
+
+Ma & Torquato, PRE 102, 043310 (2020), Sec. IV. A periodic L x L image with
+exactly round(phi N^2) pixels of the tracked phase is annealed towards a
+target two-point function: a trial swaps one pixel of each phase (so the
+volume fraction is conserved), with the Metropolis rule on the energy of
+Eq. (23),
+
+    E = sum_b [S2_b - target_b]^2 ,
+
+summed over radial bins b = 1..n_b of width one pixel with 0 < r <= l_c
+(bins are those of :class:`randmedia.describe.two_phase.RadialBinning`, so the
+construction targets exactly what the S2 estimator measures, sampled in *all*
+directions). The target of a bin is the exact average of the target S2 over
+the lattice displacements in that bin. Differences of S2 and of chi_V are
+the same, so E is the chi_V energy of Eq. (23).
+
+Acceleration. With C_b = sum_x sum_{v in b} I(x) I(x+v) and the shell counts
+h_x[b] = sum_{v in b} I(x+v) kept for every pixel x, swapping p (tracked
+phase -> other) with q (other -> tracked) changes
+
+    Delta C_b = 2 (h_q[b] - h_p[b]) - 2 [|p - q| in b],
+
+so a trial costs O(n_b); only an accepted swap pays O(l_c^2) to update h
+around p and q. The straightforward alternative scans the l_c-disk around p
+and q for every trial (``scan=True``; kept as the benchmark baseline and as
+an independent check: both follow the same random trajectory to the
+bit-identical image).
+
+Phase-inversion symmetry. The kernel always tracks the minority phase
+(phase 2 when phi2 <= 1/2), the initial image and every random draw depend
+only on min(phi1, phi2), and the energy is that of chi_V, which both phases
+share; the construction at 1 - phi2 is therefore exactly the complement of
+the one at phi2 with the same seed.
+
+Schedule (the paper fixes only the scalings, Sec. IV): total trials
+``trials_per_pixel * phi1 phi2 N^2``; initial temperature
+``initial_temperature * phi1 phi2 / N^2``, lowered geometrically stage by
+stage to ``final_temperature_ratio`` times the initial one; the last
+``refine_fraction`` of the trials draw both pixels from the interface (pixels
+with a 4-neighbour of the other phase, kept in incrementally updated lists),
+which removes isolated islands. If Delta S2 = mean_b |S2_b - target_b| then
+exceeds the tolerance, up to ``max_extra_stages`` more refinement stages are
+run at the final temperature; a construction still above tolerance raises
+:class:`ConstructionError` -- it is never written as if it had converged.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import logging
+import math
+import os
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+from typing import Callable
+
+import numpy as np
+from numba import njit
+
+from randmedia.describe.two_phase import RadialBinning
+from randmedia.io import atomic_output
+
+_NEIGHBOURS = np.array([[-1, 0], [1, 0], [0, -1], [0, 1]], dtype=np.int64)
+
+
+class ConstructionError(RuntimeError):
+    """The construction did not reach the required Delta S2."""
+
+
+@dataclass(frozen=True)
+class AnnealingSchedule:
+    """Constants of the annealing schedule (see the module docstring)."""
+
+    trials_per_pixel: float = 40.0
+    initial_temperature: float = 0.005
+    final_temperature_ratio: float = 1e-3
+    n_stages: int = 40
+    refine_fraction: float = 0.1
+    tolerance: float = 2e-4
+    max_extra_stages: int = 40
+
+    def __post_init__(self):
+        checks = {
+            "trials_per_pixel": self.trials_per_pixel > 0,
+            "initial_temperature": self.initial_temperature >= 0,
+            "final_temperature_ratio": 0 < self.final_temperature_ratio <= 1,
+            "n_stages": self.n_stages >= 2,
+            "refine_fraction": 0 <= self.refine_fraction < 1,
+            "tolerance": self.tolerance > 0,
+            "max_extra_stages": self.max_extra_stages >= 0,
+        }
+        bad = [name for name, ok in checks.items() if not ok]
+        if bad:
+            raise ValueError(f"invalid annealing schedule values: {bad} ({self})")
+
+
+@dataclass
+class Construction:
+    """A finished construction: the image (1 = phase 2) and how it got there."""
+
+    image: np.ndarray
+    delta_s2: float
+    energy: float
+    s2: np.ndarray  # S2 of phase 2 per bin, bins 0..n_b
+    target: np.ndarray  # target S2 of phase 2 per bin
+    r: np.ndarray  # mean distance per bin
+    stats: dict = field(default_factory=dict)
+
+
+# --------------------------------------------------------------------------- kernels
+
+
+@njit(cache=True)
+def _shell_counts(image, side, offsets, column, n_columns):
+    """h[x, c] = number of tracked pixels at displacements of bin c+1 from pixel x."""
+    h = np.zeros((side * side, n_columns), dtype=np.int16)
+    for x in range(side * side):
+        if image[x] == 0:
+            continue
+        i0 = x // side
+        j0 = x - i0 * side
+        for k in range(offsets.shape[0]):
+            i = i0 + offsets[k, 0]
+            j = j0 + offsets[k, 1]
+            if i < 0:
+                i += side
+            elif i >= side:
+                i -= side
+            if j < 0:
+                j += side
+            elif j >= side:
+                j -= side
+            h[i * side + j, column[k]] += 1
+    return h
+
+
+@njit(cache=True)
+def _scatter(h, side, x, offsets, column, sign):
+    i0 = x // side
+    j0 = x - i0 * side
+    for k in range(offsets.shape[0]):
+        i = i0 + offsets[k, 0]
+        j = j0 + offsets[k, 1]
+        if i < 0:
+            i += side
+        elif i >= side:
+            i -= side
+        if j < 0:
+            j += side
+        elif j >= side:
+            j -= side
+        h[i * side + j, column[k]] += sign
+
+
+@njit(cache=True)
+def _scan_counts(image, side, x, offsets, column, out):
+    """out[c] = tracked pixels at displacements of bin c+1 from x, by scanning the disk."""
+    out[:] = 0
+    i0 = x // side
+    j0 = x - i0 * side
+    for k in range(offsets.shape[0]):
+        i = i0 + offsets[k, 0]
+        j = j0 + offsets[k, 1]
+        if i < 0:
+            i += side
+        elif i >= side:
+            i -= side
+        if j < 0:
+            j += side
+        elif j >= side:
+            j -= side
+        out[column[k]] += image[i * side + j]
+
+
+@njit(cache=True)
+def _pair_column(p, q, side, cutoff, column_table):
+    """Bin column of the minimal-image displacement q - p, or -1 beyond the cutoff."""
+    di = q // side - p // side
+    dj = q % side - p % side
+    if di > side // 2:
+        di -= side
+    elif di < -(side // 2):
+        di += side
+    if dj > side // 2:
+        dj -= side
+    elif dj < -(side // 2):
+        dj += side
+    if abs(di) > cutoff or abs(dj) > cutoff:
+        return -1
+    return column_table[di + cutoff, dj + cutoff]
+
+
+@njit(cache=True)
+def _is_candidate(image, side, x, interface_only):
+    if not interface_only:
+        return True
+    i0 = x // side
+    j0 = x - i0 * side
+    for n in range(4):
+        i = (i0 + _NEIGHBOURS[n, 0]) % side
+        j = (j0 + _NEIGHBOURS[n, 1]) % side
+        if image[i * side + j] != image[x]:
+            return True
+    return False
+
+
+@njit(cache=True)
+def _build_lists(image, side, interface_only, members, sizes, slot):
+    """members[phase, :sizes[phase]] = candidate pixels of each phase; slot = position or -1."""
+    sizes[0] = 0
+    sizes[1] = 0
+    for x in range(side * side):
+        if _is_candidate(image, side, x, interface_only):
+            ph = image[x]
+            members[ph, sizes[ph]] = x
+            slot[x] = sizes[ph]
+            sizes[ph] += 1
+        else:
+            slot[x] = -1
+
+
+@njit(cache=True)
+def _list_remove(members, sizes, slot, ph, x):
+    s = slot[x]
+    last = members[ph, sizes[ph] - 1]
+    members[ph, s] = last
+    slot[last] = s
+    sizes[ph] -= 1
+    slot[x] = -1
+
+
+@njit(cache=True)
+def _refresh(image, side, x, old_phase, interface_only, members, sizes, slot):
+    if slot[x] >= 0:
+        _list_remove(members, sizes, slot, old_phase, x)
+    if _is_candidate(image, side, x, interface_only):
+        ph = image[x]
+        members[ph, sizes[ph]] = x
+        slot[x] = sizes[ph]
+        sizes[ph] += 1
+
+
+@njit(cache=True)
+def _anneal(image, h, diff, norm, offsets, column, column_table, cutoff, side, n_trials,
+            temperature, interface_only, scan, rng):
+    """Run ``n_trials`` Metropolis swap trials in place; returns (accepted, energy change)."""
+    n_columns = diff.shape[0]
+    members = np.empty((2, side * side), dtype=np.int64)
+    sizes = np.zeros(2, dtype=np.int64)
+    slot = np.empty(side * side, dtype=np.int64)
+    _build_lists(image, side, interface_only, members, sizes, slot)
+    delta = np.empty(n_columns)
+    hp = np.empty(n_columns, dtype=np.int64)
+    hq = np.empty(n_columns, dtype=np.int64)
+    accepted = 0
+    energy_change = 0.0
+    beta = 1.0 / temperature if temperature > 0 else np.inf
+    for _ in range(n_trials):
+        if sizes[0] == 0 or sizes[1] == 0:
+            break
+        p = members[1, int(rng.random() * sizes[1])]
+        q = members[0, int(rng.random() * sizes[0])]
+        if scan:
+            _scan_counts(image, side, p, offsets, column, hp)
+            _scan_counts(image, side, q, offsets, column, hq)
+        else:
+            for c in range(n_columns):
+                hp[c] = h[p, c]
+                hq[c] = h[q, c]
+        pair = _pair_column(p, q, side, cutoff, column_table)
+        d_energy = 0.0
+        for c in range(n_columns):
+            dc = 2 * (hq[c] - hp[c])
+            if c == pair:
+                dc -= 2
+            d = dc * norm[c]
+            delta[c] = d
+            d_energy += d * (2.0 * diff[c] + d)
+        if d_energy > 0.0:
+            if beta == np.inf or rng.random() >= math.exp(-d_energy * beta):
+                continue
+        accepted += 1
+        energy_change += d_energy
+        for c in range(n_columns):
+            diff[c] += delta[c]
+        image[p] = 0
+        image[q] = 1
+        if not scan:
+            _scatter(h, side, p, offsets, column, -1)
+            _scatter(h, side, q, offsets, column, 1)
+        # p left the tracked phase (1 -> 0), q joined it (0 -> 1)
+        _refresh(image, side, p, 1, interface_only, members, sizes, slot)
+        _refresh(image, side, q, 0, interface_only, members, sizes, slot)
+        if interface_only:
+            for x in (p, q):
+                i0 = x // side
+                j0 = x - i0 * side
+                for n in range(4):
+                    y = ((i0 + _NEIGHBOURS[n, 0]) % side) * side + (j0 + _NEIGHBOURS[n, 1]) % side
+                    if y != p and y != q:
+                        _refresh(image, side, y, image[y], interface_only, members, sizes, slot)
+    return accepted, energy_change
+
+
+# --------------------------------------------------------------------------- driver
+
+
+class _Geometry:
+    """Bins, displacement stencil and normalization for an L x L image and cutoff l_c."""
+
+    def __init__(self, side: int, cutoff: float):
+        self.side = side
+        self.binning = RadialBinning.build((side, side), cutoff)
+        vectors = self.binning.displacements()
+        keep = self.binning.bin_of > 0
+        # row-major order of the stencil: an accepted swap then walks h almost sequentially
+        order = np.lexsort((vectors[keep][:, 1], vectors[keep][:, 0]))
+        self.offsets = np.ascontiguousarray(vectors[keep][order], dtype=np.int64)
+        self.column = np.ascontiguousarray((self.binning.bin_of[keep] - 1)[order], dtype=np.int64)
+        self.n_columns = int(self.binning.counts.size - 1)
+        self.cutoff = int(math.floor(cutoff))
+        table = np.full((2 * self.cutoff + 1, 2 * self.cutoff + 1), -1, dtype=np.int64)
+        table[self.offsets[:, 0] + self.cutoff, self.offsets[:, 1] + self.cutoff] = self.column
+        self.column_table = table
+        # S2_b = C_b / (N^2 n_b)
+        self.norm = 1.0 / (side * side * self.binning.counts[1:].astype(float))
+
+    def s2(self, image_flat: np.ndarray) -> np.ndarray:
+        """S2 of the tracked phase per bin (0..n_b) from the shell counts, exactly."""
+        counts = _shell_counts(image_flat, self.side, self.offsets, self.column, self.n_columns)
+        pair_sums = (counts[image_flat == 1].astype(np.int64)).sum(axis=0)
+        return np.concatenate([[image_flat.mean()], pair_sums * self.norm])
+
+
+def _validate(phi2: float, side: int, cutoff: float) -> None:
+    if not 0.0 < phi2 < 1.0:
+        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
+    if not isinstance(side, (int, np.integer)) or side < 4:
+        raise ValueError(f"L must be an integer >= 4 pixels (the image is L x L), got {side!r}")
+    if not 1.0 <= cutoff < side / 2:
+        raise ValueError(f"cutoff l_c must satisfy 1 <= l_c < L/2 = {side / 2:g}, got {cutoff}")
+
+
+def tracked_target(target_s2: Callable, phi2: float, binning: RadialBinning) -> tuple[float, np.ndarray]:
+    """(phi of the tracked minority phase, its target S2 per bin as the exact bin average).
+
+    ``target_s2`` is S2 of phase 2; for the minority phase 1 the target is
+    phi1^2 + chi_V(r) with chi_V = S2^(2) - phi2^2.
+    """
+    at_zero = float(target_s2(np.array([0.0]))[0])
+    if not math.isclose(at_zero, phi2, rel_tol=1e-6, abs_tol=1e-9):
+        raise ValueError(f"target S2(0) = {at_zero:g} must equal phi2 = {phi2:g}")
+    phi = min(phi2, 1.0 - phi2)
+
+    def chi(r):
+        return np.asarray(target_s2(r), dtype=float) - phi2 * phi2
+
+    return phi, phi * phi + binning.average_of(chi)
+
+
+def construct(
+    target_s2: Callable[[np.ndarray], np.ndarray],
+    phi2: float,
+    side: int,
+    cutoff: float,
+    rng: np.random.Generator,
+    schedule: AnnealingSchedule = AnnealingSchedule(),
+    *,
+    checkpoint: str | os.PathLike | None = None,
+    checkpoint_seconds: float = 30.0,
+    log: logging.Logger | None = None,
+    scan: bool = False,
+) -> Construction:
+    """Construct an L x L periodic image (1 = phase 2) with S2 of phase 2 close to ``target_s2``.
+
+    ``checkpoint``: file to save the state to (image + random state, at stage
+    boundaries, at most every ``checkpoint_seconds``) and to resume from if it
+    exists and belongs to the same construction; it is removed on success.
+    ``scan``: use the straightforward per-trial disk scan (benchmark baseline).
+    """
+    _validate(phi2, side, cutoff)
+    log = log or logging.getLogger(__name__)
+    geometry = _Geometry(side, cutoff)
+    phi, target = tracked_target(target_s2, phi2, geometry.binning)
+    n_pixels = side * side
+    n_tracked = int(round(phi * n_pixels))
+    if n_tracked == 0:
+        raise ValueError(f"phi2 = {phi2} leaves no pixel of the minority phase on {side}^2 pixels")
+    weight = phi * (1.0 - phi)
+    total_trials = int(schedule.trials_per_pixel * weight * n_pixels)
+    t_initial = schedule.initial_temperature * weight / n_pixels
+    n_refine = int(round(schedule.refine_fraction * schedule.n_stages))
+    n_cool = schedule.n_stages - n_refine
+    trials_per_stage = max(1, total_trials // schedule.n_stages)
+
+    def temperature(stage: int) -> float:
+        k = min(stage, n_cool - 1)
+        return t_initial * schedule.final_temperature_ratio ** (k / max(1, n_cool - 1))
+
+    key = _checkpoint_key(phi2, side, cutoff, target, schedule, rng, scan)
+    stage, image = 0, None
+    if checkpoint is not None:
+        stage, image = _load_checkpoint(checkpoint, key, rng, log)
+    if image is None:
+        image = np.zeros(n_pixels, dtype=np.uint8)
+        image[rng.permutation(n_pixels)[:n_tracked]] = 1
+
+    h = (_shell_counts(image, side, geometry.offsets, geometry.column, geometry.n_columns)
+         if not scan else np.zeros((1, geometry.n_columns), dtype=np.int16))
+    diff = geometry.s2(image)[1:] - target[1:]
+    started, last_save = time.perf_counter(), time.perf_counter()
+    trials_done = accepted_total = 0
+    last_stage = schedule.n_stages + schedule.max_extra_stages
+    delta_s2 = float(np.mean(np.abs(diff)))
+    while stage < last_stage:
+        if stage >= schedule.n_stages and delta_s2 <= schedule.tolerance:
+            break
+        tic = time.perf_counter()
+        accepted, _ = _anneal(image, h, diff, geometry.norm, geometry.offsets, geometry.column,
+                              geometry.column_table, geometry.cutoff, side, trials_per_stage,
+                              temperature(stage), stage >= n_cool, scan, rng)
+        stage += 1
+        elapsed = time.perf_counter() - tic
+        trials_done += trials_per_stage
+        accepted_total += accepted
+        delta_s2 = float(np.mean(np.abs(diff)))
+        remaining = max(0, schedule.n_stages - stage) * elapsed
+        log.info("stage %d/%d T=%.3g: %.3g trials/s, acceptance %.4f, E=%.4g, dS2=%.3g, ETA %.0f s",
+                 stage, schedule.n_stages, temperature(stage - 1), trials_per_stage / elapsed,
+                 accepted / trials_per_stage, float(np.sum(diff**2)), delta_s2, remaining)
+        if checkpoint is not None and time.perf_counter() - last_save >= checkpoint_seconds:
+            _save_checkpoint(checkpoint, key, stage, image, rng)
+            last_save = time.perf_counter()
+
+    s2_tracked = geometry.s2(image)  # exact recount, independent of the incremental updates
+    delta_s2 = float(np.mean(np.abs(s2_tracked[1:] - target[1:])))
+    seconds = time.perf_counter() - started
+    stats = {"trials": trials_done, "accepted": accepted_total, "stages": stage,
+             "seconds": seconds, "schedule": asdict(schedule)}
+    if delta_s2 > schedule.tolerance:
+        raise ConstructionError(
+            f"construction did not converge: Delta S2 = {delta_s2:.3g} > tolerance "
+            f"{schedule.tolerance:g} after {stage} stages (phi2 = {phi2}, L = {side}, l_c = {cutoff})"
+        )
+    if checkpoint is not None:
+        Path(checkpoint).unlink(missing_ok=True)
+    tracked_is_phase2 = phi2 <= 0.5
+    phase2 = image if tracked_is_phase2 else 1 - image
+    s2_phase2 = s2_tracked if tracked_is_phase2 else _complement_s2(s2_tracked, phi)
+    target_phase2 = target if tracked_is_phase2 else _complement_s2(target, phi)
+    return Construction(
+        image=phase2.reshape(side, side).astype(np.uint8),
+        delta_s2=delta_s2,
+        energy=float(np.sum((s2_tracked[1:] - target[1:]) ** 2)),
+        s2=s2_phase2,
+        target=target_phase2,
+        r=geometry.binning.r_mean,
+        stats=stats,
+    )
+
+
+def _complement_s2(s2_tracked: np.ndarray, phi: float) -> np.ndarray:
+    """S2 of the other phase: S2' = 1 - 2 phi + S2 for r > 0; S2'(0) = 1 - phi."""
+    other = 1.0 - 2.0 * phi + s2_tracked
+    other[0] = 1.0 - phi
+    return other
+
+
+# --------------------------------------------------------------------------- checkpoints
+
+
+def _checkpoint_key(phi2, side, cutoff, target, schedule, rng, scan) -> str:
+    """Identifies a construction: parameters, target and the random state it started from."""
+    payload = json.dumps({
+        "phi2": phi2, "L": side, "lc": cutoff, "schedule": asdict(schedule), "scan": scan,
+        "target": hashlib.sha256(np.ascontiguousarray(target).tobytes()).hexdigest(),
+        "rng": rng.bit_generator.state,
+    }, sort_keys=True, default=str)
+    return hashlib.sha256(payload.encode()).hexdigest()
+
+
+def _save_checkpoint(path, key, stage, image, rng) -> None:
+    with atomic_output(path) as tmp:
+        with open(tmp, "wb") as handle:
+            np.savez(handle, key=key, stage=stage, image=image,
+                     rng_state=json.dumps(rng.bit_generator.state, default=int))
+
+
+def _load_checkpoint(path, key, rng, log):
+    path = Path(path)
+    if not path.is_file():
+        return 0, None
+    try:
+        with np.load(path) as data:
+            if str(data["key"]) != key:
+                log.warning("%s belongs to another construction; starting afresh", path)
+                return 0, None
+            state = json.loads(str(data["rng_state"]))
+            stage, image = int(data["stage"]), data["image"].copy()
+    except (OSError, ValueError, KeyError) as exc:
+        log.warning("%s is unreadable (%s); starting afresh", path, exc)
+        return 0, None
+    rng.bit_generator.state = state
+    log.info("resumed from %s at stage %d", path, stage)
+    return stage, image

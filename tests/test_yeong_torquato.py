@@ -1,0 +1,150 @@
+"""Accelerated Yeong-Torquato construction: exactness, convergence, symmetry, resume."""
+
+import functools
+import os
+import signal
+import subprocess
+import sys
+
+import numpy as np
+import pytest
+import yaml
+
+from conftest import SCHEMA
+from randmedia.describe.two_phase import s2_discrepancy, two_point_function
+from randmedia.generate.yeong_torquato import (AnnealingSchedule, ConstructionError, _Geometry,
+                                               _shell_counts, construct)
+from randmedia.theory.debye import debye_s2
+
+SIDE, A, CUTOFF = 48, 3.0, 12.0
+
+
+def debye(phi2, a=A):
+    return functools.partial(debye_s2, phi2=phi2, a=a)
+
+
+def build(phi2=0.3, seed=1, side=SIDE, cutoff=CUTOFF, **kwargs):
+    schedule = kwargs.pop("schedule", AnnealingSchedule())
+    return construct(debye(phi2), phi2, side, cutoff, np.random.default_rng(seed), schedule,
+                     **kwargs)
+
+
+def test_shell_counts_equal_brute_force():
+    geometry = _Geometry(21, 6.0)
+    image = (np.random.default_rng(0).random(21 * 21) < 0.4).astype(np.uint8)
+    h = _shell_counts(image, 21, geometry.offsets, geometry.column, geometry.n_columns)
+    grid = image.reshape(21, 21)
+    for x in (0, 5, 220, 440):
+        i, j = divmod(x, 21)
+        expected = np.zeros(geometry.n_columns, dtype=int)
+        for (di, dj), c in zip(geometry.offsets, geometry.column):
+            expected[c] += grid[(i + di) % 21, (j + dj) % 21]
+        np.testing.assert_array_equal(h[x], expected)
+
+
+def test_fast_and_disk_scan_constructions_are_identical():
+    """O(bins) trials and the O(l_c^2) scan follow the same trajectory to the same image."""
+    schedule = AnnealingSchedule(trials_per_pixel=10, tolerance=1.0)
+    fast = build(schedule=schedule)
+    slow = build(schedule=schedule, scan=True)
+    np.testing.assert_array_equal(fast.image, slow.image)
+    assert fast.stats["accepted"] == slow.stats["accepted"] > 0
+
+
+@pytest.mark.parametrize("phi2", [0.1, 0.3, 0.5])
+def test_converges_and_matches_independent_estimator(phi2):
+    result = build(phi2)
+    assert result.image.sum() == round(phi2 * SIDE * SIDE)  # phi2 exactly conserved
+    assert result.delta_s2 <= 2e-4
+    # the construction's own S2 equals the FFT estimator's, bin by bin
+    fft = two_point_function(result.image[np.newaxis], phase=1, r_max=CUTOFF)
+    np.testing.assert_allclose(result.s2, fft["S2"].values, atol=1e-14)
+    recomputed = s2_discrepancy(result.image[np.newaxis], 1, debye(phi2), CUTOFF)[0]
+    assert recomputed == pytest.approx(result.delta_s2, abs=1e-14)
+
+
+def test_phase_inversion_symmetry():
+    """phi2 and 1 - phi2 run the same code: complementary images for the same seed."""
+    low, high = build(0.3, seed=4), build(0.7, seed=4)
+    np.testing.assert_array_equal(high.image, 1 - low.image)
+    np.testing.assert_allclose(high.s2[1:] - high.target[1:], low.s2[1:] - low.target[1:],
+                               atol=1e-14)
+
+
+def test_same_seed_same_image_different_seed_different_image():
+    np.testing.assert_array_equal(build(seed=3).image, build(seed=3).image)
+    assert not np.array_equal(build(seed=3).image, build(seed=5).image)
+
+
+def test_unconverged_construction_fails_loudly():
+    schedule = AnnealingSchedule(trials_per_pixel=0.5, tolerance=1e-9, max_extra_stages=0)
+    with pytest.raises(ConstructionError, match="did not converge"):
+        build(schedule=schedule)
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    ({"cutoff": 24.0}, "l_c must satisfy"),
+    ({"cutoff": 30.0}, "l_c must satisfy"),
+    ({"side": 48.5}, "L must be an integer"),
+    ({"side": 2}, "L must be an integer"),
+])
+def test_rejects_bad_geometry(kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        build(**kwargs)
+
+
+@pytest.mark.parametrize("phi2", [0.0, 1.0, -0.2, 1.5])
+def test_rejects_bad_volume_fraction(phi2):
+    with pytest.raises(ValueError, match="phi2 must lie in"):
+        construct(lambda r: np.zeros_like(r), phi2, SIDE, CUTOFF, np.random.default_rng(0))
+
+
+def test_rejects_bad_length_scale_and_inconsistent_target():
+    with pytest.raises(ValueError, match="a must be > 0"):
+        debye_s2(1.0, 0.3, 0.0)
+    with pytest.raises(ValueError, match="must equal phi2"):
+        construct(debye(0.2), 0.3, SIDE, CUTOFF, np.random.default_rng(0))
+
+
+def test_schema_defaults_equal_package_defaults():
+    with open(SCHEMA) as handle:
+        schema = yaml.safe_load(handle)
+    properties = schema["properties"]["debye2020"]["properties"]["media"]["properties"]
+    defaults = {k: v["default"] for k, v in properties["schedule"]["properties"].items()}
+    assert defaults == AnnealingSchedule().__dict__
+
+
+RESUMABLE = """
+import functools, logging, sys
+import numpy as np
+from randmedia.generate.yeong_torquato import AnnealingSchedule, construct
+from randmedia.theory.debye import debye_s2
+logging.basicConfig(level=logging.INFO, stream=sys.stdout)
+schedule = AnnealingSchedule(trials_per_pixel=200, n_stages=40)
+result = construct(functools.partial(debye_s2, phi2=0.3, a=4.0), 0.3, 101, 24.0,
+                   np.random.default_rng(12), schedule, checkpoint=sys.argv[1],
+                   checkpoint_seconds=0.0)
+np.save(sys.argv[2], result.image)
+"""
+
+
+def test_killed_construction_resumes_to_the_same_image(tmp_path):
+    checkpoint, first, second = tmp_path / "c.npz", tmp_path / "a.npy", tmp_path / "b.npy"
+    command = [sys.executable, "-c", RESUMABLE, str(checkpoint)]
+    proc = subprocess.Popen(command + [str(first)], stdout=subprocess.PIPE, text=True)
+    stages_seen = 0
+    for line in proc.stdout:  # kill after a few checkpointed stages
+        stages_seen += "stage " in line
+        if stages_seen >= 5 and checkpoint.exists():
+            break
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait()
+    assert checkpoint.exists() and not first.exists()
+    resumed = subprocess.run(command + [str(first)], capture_output=True, text=True)
+    assert resumed.returncode == 0, resumed.stderr[-2000:]
+    assert "resumed from" in resumed.stdout
+    assert not checkpoint.exists()  # removed on success
+    # an uninterrupted run (no checkpoint file) gives the identical image
+    subprocess.run([sys.executable, "-c", RESUMABLE, str(tmp_path / "none.npz"), str(second)],
+                   check=True, capture_output=True)
+    np.testing.assert_array_equal(np.load(first), np.load(second))

@@ -1,0 +1,33 @@
+"""Rule debye2020_media_sample: one Debye random medium by the accelerated YT construction."""
+from randmedia.jobs import start_job
+
+log = start_job(snakemake)  # noqa: F821
+
+import functools  # noqa: E402
+from pathlib import Path  # noqa: E402
+
+from randmedia.generate import phase_image_dataset  # noqa: E402
+from randmedia.generate.yeong_torquato import AnnealingSchedule, construct  # noqa: E402
+from randmedia.io import write_dataset  # noqa: E402
+from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
+from randmedia.theory.debye import debye_s2  # noqa: E402
+
+params = dict(snakemake.params.items())  # noqa: F821
+index = int(snakemake.wildcards.k)  # noqa: F821
+phi2 = params["phi2"]
+seed = sample_seed(params["seed"], "debye2020", f"debye_phi{phi2:g}", index)
+output = Path(snakemake.output[0])  # noqa: F821
+result = construct(
+    functools.partial(debye_s2, phi2=phi2, a=params["a"]), phi2, params["L"], params["lc"],
+    sample_rng(seed), AnnealingSchedule(**params["schedule"]),
+    checkpoint=output.with_name(f".{output.stem}.checkpoint.npz"), log=log,
+)
+log.info("converged: Delta S2 = %.3g after %d trials (%d accepted) in %.1f s",
+         result.delta_s2, result.stats["trials"], result.stats["accepted"], result.stats["seconds"])
+dataset = phase_image_dataset(result.image, {
+    "phi2": phi2, "a": params["a"], "lc": params["lc"], "L": params["L"], "sample": index,
+    "delta_S2": result.delta_s2, "trials": result.stats["trials"],
+    "accepted": result.stats["accepted"], "construction_seconds": result.stats["seconds"],
+})
+write_dataset(dataset, output, rule=snakemake.rule, seed=seed,  # noqa: F821
+              config={**params, "sample": index})
