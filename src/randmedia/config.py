@@ -92,6 +92,16 @@ def _cross_checks(config: dict) -> list[str]:
                 f"{media['L'] / 2:g} (beyond half the periodic image a distance is not unique)"
             )
     disks = config["debye2020"]["overlapping_disks"]
+    chords = config["debye2020"]["chords"]
+    for section, side_key, length_key in (("media", "L", "a"), ("overlapping_disks", "L", "radius")):
+        values = config["debye2020"][section]
+        z_max = chords["z_max_over_length"] * values[length_key]
+        if z_max >= 4 * values[side_key]:
+            problems.append(
+                "config key 'debye2020.chords.z_max_over_length': z_max = "
+                f"{z_max:g} pixels for {section} must be shorter than the 4 L = "
+                f"{4 * values[side_key]} pixel sampling lines"
+            )
     side, radius = disks["L"], disks["radius"]
     r_max = disks["s2_r_max_over_R"] * radius
     if r_max >= side / 2:

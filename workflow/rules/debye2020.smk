@@ -10,6 +10,9 @@
 import re
 
 MEDIA = config["debye2020"]["media"]
+CHORDS = config["debye2020"]["chords"]
+MEDIA_CHORDS = "results/debye2020/descriptors/media_phi{phi2}_chords.nc"
+LINEAL_FITS = "results/debye2020/fits/lineal_path.nc"
 MEDIA_PHI2 = {f"{phi:g}": phi for phi in MEDIA["phi2"]}
 MEDIA_SAMPLE = "results/debye2020/media/phi{phi2}/sample{k}.nc"
 MEDIA_S2 = "results/debye2020/descriptors/media_phi{phi2}_S2.nc"
@@ -92,10 +95,81 @@ rule debye2020_fig02:
         "../scripts/debye2020/fig02.py"
 
 
+rule debye2020_media_chords:
+    """L(z) and p(z) of the void phase of the constructions at one phi2 (Sec. V C-D)."""
+    input:
+        samples=expand(MEDIA_SAMPLE, k=range(MEDIA["n_samples"]), allow_missing=True),
+        code=package_sources("describe/chords.py", "seeding.py"),
+    output:
+        MEDIA_CHORDS,
+    params:
+        phi2=lambda wildcards: MEDIA_PHI2[wildcards.phi2],
+        system=lambda wildcards: f"chords_media_phi{wildcards.phi2}",
+        length=MEDIA["a"],
+        chords=CHORDS,
+        seed=config["seed"],
+    log:
+        "results/debye2020/logs/media_chords_phi{phi2}.log",
+    script:
+        "../scripts/debye2020/chords.py"
+
+
+rule debye2020_fit_lineal_path:
+    """L_w of Eq. (29) per phi2 and <R^2>/<R> of Eq. (30)."""
+    input:
+        chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
+        code=package_sources("fit.py"),
+    output:
+        LINEAL_FITS,
+    params:
+        a=MEDIA["a"],
+    log:
+        "results/debye2020/logs/fit_lineal_path.log",
+    script:
+        "../scripts/debye2020/fit_lineal_path.py"
+
+
+rule debye2020_fig06:
+    """Fig. 6: lineal-path function and fitted L_w."""
+    input:
+        chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
+        fits=LINEAL_FITS,
+        code=package_sources("plot/style.py", "plot/debye2020.py"),
+    output:
+        pdf="results/debye2020/figures/fig06.pdf",
+        png="results/debye2020/figures/fig06.png",
+    params:
+        a=MEDIA["a"],
+        figure="fig06_lineal_path",
+    log:
+        "results/debye2020/logs/fig06.log",
+    script:
+        "../scripts/debye2020/fig06_07.py"
+
+
+rule debye2020_fig07:
+    """Fig. 7: matrix chord-length density."""
+    input:
+        chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
+        fits=LINEAL_FITS,
+        code=package_sources("plot/style.py", "plot/debye2020.py"),
+    output:
+        pdf="results/debye2020/figures/fig07.pdf",
+        png="results/debye2020/figures/fig07.png",
+    params:
+        a=MEDIA["a"],
+        figure="fig07_chord_density",
+    log:
+        "results/debye2020/logs/fig07.log",
+    script:
+        "../scripts/debye2020/fig06_07.py"
+
+
 rule debye2020_numbers:
     """tables/numbers.csv: our counterparts of the numbers quoted in the text."""
     input:
         s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
+        fits=LINEAL_FITS,
         code=package_sources("compare/debye2020.py"),
     output:
         "results/debye2020/tables/numbers.csv",
@@ -108,6 +182,7 @@ DISKS = config["debye2020"]["overlapping_disks"]
 DISKS_DIR = f"results/debye2020/overlapping_disks/phi{DISKS['phi2']:g}"
 DISKS_S2 = f"results/debye2020/descriptors/overlapping_disks_phi{DISKS['phi2']:g}_S2.nc"
 DISKS_FIGURE = "results/debye2020/validation/overlapping_disks_S2.pdf"
+DISKS_CHORDS = f"results/debye2020/descriptors/overlapping_disks_phi{DISKS['phi2']:g}_chords.nc"
 
 
 rule debye2020_overlapping_disks_image:
@@ -163,10 +238,32 @@ rule debye2020_overlapping_disks_figure:
         "../scripts/debye2020/overlapping_disks_figure.py"
 
 
+rule debye2020_overlapping_disks_chords:
+    """L(z), p(z) of the void phase of the overlapping-disk images (validation, Eqs. 38-39)."""
+    input:
+        samples=expand(f"{DISKS_DIR}/sample{{k}}.nc", k=range(DISKS["n_samples"])),
+        code=package_sources("describe/chords.py", "seeding.py"),
+    output:
+        DISKS_CHORDS,
+    params:
+        phi2=DISKS["phi2"],
+        system="chords_overlapping_disks",
+        length=DISKS["radius"],
+        chords=CHORDS,
+        seed=config["seed"],
+    log:
+        "results/debye2020/logs/overlapping_disks_chords.log",
+    script:
+        "../scripts/debye2020/chords.py"
+
+
 rule debye2020_comparison:
     """results/debye2020/comparison.csv: every computed value against its reference."""
     input:
         s2=DISKS_S2,
+        disk_chords=DISKS_CHORDS,
+        fits=LINEAL_FITS,
+        quoted="config/reference/debye2020_quoted_numbers.csv",
         code=package_sources("compare/__init__.py", "compare/debye2020.py", "theory/overlapping.py"),
     output:
         "results/debye2020/comparison.csv",
@@ -189,6 +286,10 @@ DEBYE2020_TARGETS = [
     "results/debye2020/figures/fig01.png",
     "results/debye2020/figures/fig02.pdf",
     "results/debye2020/figures/fig02.png",
+    "results/debye2020/figures/fig06.pdf",
+    "results/debye2020/figures/fig06.png",
+    "results/debye2020/figures/fig07.pdf",
+    "results/debye2020/figures/fig07.png",
     DISKS_FIGURE,
     DISKS_FIGURE.replace(".pdf", ".png"),
 ]

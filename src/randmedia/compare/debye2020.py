@@ -74,3 +74,66 @@ def construction_numbers(s2_by_phi2: dict) -> "pd.DataFrame":
                 "where": "Sec. IV (paper: 0.6e-4 to 2e-4)",
             })
     return pd.DataFrame(rows)
+
+
+def overlapping_disks_chord_rows(chords: xr.Dataset, *, radius: float, phi2: float,
+                                 compare_z_max: float, k_sigma: float) -> list[dict]:
+    """L(z) of the void phase against Eq. (38) every R/2 up to ``compare_z_max``, and the
+    mean chord against Eq. (20), l_C = pi phi1 / s = pi R / (2 eta) with s of Eq. (34)."""
+    phi1 = 1.0 - phi2
+    eta = -np.log(phi1)
+    z = chords["z"].values
+    rows = []
+    for target in np.arange(0.0, compare_z_max + 1e-9, radius / 2):
+        i = int(np.argmin(np.abs(z - target)))
+        rows.append(compare(
+            quantity=f"L_void_overlapping_disks_phi2={phi2:g}",
+            key=f"z/R={z[i] / radius:.2f}",
+            published=float(phi1 ** (1 + 2 * z[i] / (np.pi * radius))),
+            ours=float(chords["L"].values[i]),
+            ours_sem=float(chords["L_sem"].values[i]),
+            k_sigma=k_sigma,
+        ))
+    values = chords["mean_chord_samples"].values
+    rows.append(compare(
+        quantity=f"mean_chord_void_overlapping_disks_phi2={phi2:g}",
+        key="l_C/R",
+        published=float(np.pi / (2 * eta)),
+        ours=float(values.mean() / radius),
+        ours_sem=float(values.std(ddof=1) / np.sqrt(values.size) / radius),
+        k_sigma=k_sigma,
+    ))
+    return rows
+
+
+def lineal_size_rows(fits: xr.Dataset, reference, *, k_sigma: float) -> list[dict]:
+    """<R^2>/<R> of Eq. (30), averaged over phi2, against the quoted (0.94 +- 0.04) a."""
+    quoted = reference.set_index("quantity")["value"]
+    ratio = fits["R2_over_R"].values
+    error = fits["R2_over_R_err"].values
+    return [compare(
+        quantity="R2_over_R_mean",
+        key="mean over phi2, units of a",
+        published=float(quoted["R2_over_R_mean"]),
+        published_err=float(quoted["R2_over_R_spread"]),
+        ours=float(ratio.mean()),
+        ours_sem=float(np.sqrt(np.sum(error**2)) / ratio.size),
+        k_sigma=k_sigma,
+    )]
+
+
+def lineal_numbers(fits: xr.Dataset) -> "pd.DataFrame":
+    """Fitted L_w and <R^2>/<R> per phi2, in the layout of :func:`construction_numbers`."""
+    import pandas as pd
+
+    rows = []
+    for i, phi2 in enumerate(fits["phi2"].values):
+        for name, error, unit, where in (
+            ("L_w", "L_w_err", "pixel", "Sec. V C, Eq. (29), Fig. 6(b)"),
+            ("R2_over_R", "R2_over_R_err", "a", "Sec. V C, Eq. (30) (paper: 0.94 +- 0.04)"),
+        ):
+            value = float(fits[name].values[i])
+            rows.append({"quantity": name, "phi2": float(phi2), "mean": value,
+                         "sem": float(fits[error].values[i]), "min": np.nan, "max": np.nan,
+                         "n_samples": np.nan, "unit": unit, "where": where})
+    return pd.DataFrame(rows)

@@ -83,3 +83,44 @@ def fig02_s2(s2_by_phi2: dict, *, lc: float, pdf_path) -> None:
     ax.set_ylim(0, None)
     ax.legend(loc="upper right", ncol=2)
     save_figure(fig, pdf_path)
+
+
+def fig06_lineal_path(chords_by_phi2: dict, fits, *, a: float, pdf_path) -> None:
+    """Fig. 6: (a) L(z) per phi2 with the fit of Eq. (29); (b) fitted L_w against phi2."""
+    fig, (left, right) = figure(ncols=2, nrows=1, width=2 * 3.4, aspect=0.75)
+    for i, (phi2, ds) in enumerate(sorted(chords_by_phi2.items())):
+        z = ds["z"].values
+        lw = float(fits["L_w"].sel(phi2=phi2))
+        left.plot(z / a, ds["L"].values, "-", color=f"C{i}", label=rf"$\phi_2 = {phi2:g}$")
+        left.plot(z / a, (1 - phi2) * np.exp(-z / lw), ":", color=f"C{i}", lw=0.9)
+    left.set_yscale("log")
+    left.set_ylim(1e-3, 1)
+    left.set_xlabel(r"$z/a$")
+    left.set_ylabel(r"$L(z)$")
+    left.legend(loc="lower left", title="simulation (solid)\nEq. (29) fit (dotted)", fontsize=7,
+                title_fontsize=7)
+    left.set_title("(a)")
+    right.errorbar(fits["phi2"].values, fits["L_w"].values / a, yerr=fits["L_w_err"].values / a,
+                   fmt="o-", mfc="none")
+    right.set_xlabel(r"$\phi_2$")
+    right.set_ylabel(r"$L_w/a$")
+    right.set_title("(b)")
+    save_figure(fig, pdf_path)
+
+
+def fig07_chord_density(chords_by_phi2: dict, fits, *, a: float, pdf_path) -> None:
+    """Fig. 7: p(z) by direct chord sampling, with Eq. (31) from the fitted L_w."""
+    fig, ax = figure()
+    for i, (phi2, ds) in enumerate(sorted(chords_by_phi2.items())):
+        z = ds["z_chord"].values
+        lw = float(fits["L_w"].sel(phi2=phi2))
+        ax.plot(z / a, a * ds["p"].values, "o", ms=2, mfc="none", color=f"C{i}",
+                label=rf"$\phi_2 = {phi2:g}$")
+        ax.plot(z / a, a * a / (phi2 * lw * lw) * np.exp(-z / lw), "-", color=f"C{i}", lw=0.9)
+    ax.set_yscale("log")
+    ax.set_ylim(1e-4, None)
+    ax.set_xlabel(r"$z/a$")
+    ax.set_ylabel(r"$a\, p(z)$")
+    ax.legend(loc="lower left", title="chord sampling (points)\nEq. (31) with fitted $L_w$ (lines)",
+              fontsize=7, title_fontsize=7)
+    save_figure(fig, pdf_path)

@@ -1,0 +1,224 @@
+"""Lineal-path function and chord-length density of periodic digitized 2D media.
+
+Ma & Torquato 2020, Sec. II D-E: L(z) is the probability that a segment of
+length z lies entirely in the phase; p(z) dz the probability that a chord
+(a maximal segment of a line inside the phase) has length in [z, z + dz];
+Eq. (19): p(z) = (l_C / phi) L''(z); Eq. (20): l_C = pi phi / s in 2D.
+
+Both come from one sampling: straight lines of length T in many directions
+(``n_directions`` stratified angles in [0, pi) with a random offset per
+image, random origins) are walked through the periodic image in steps of
+``step`` pixels; a change of phase between two steps is placed at their
+midpoint. The interface is a smooth sub-pixel level set, as in the
+Ma-Torquato treatment of surface functions (Sec. V A): the phase indicator is
+Gaussian-filtered (periodically, width ``sigma`` pixels), interpolated
+bilinearly between pixel centres, and thresholded so that the phase keeps its
+volume fraction. Lines grazing the pixel staircase -- or the scalloped
+bilinear contour of the raw indicator -- would cut it into spurious
+sub-pixel chords: on overlapping disks (R = 10 and 20 px) these inflate the
+first p(z) bin three- to sixfold and shorten the mean chord by 7-20 %.
+The default sigma = 0.5 px follows the Ma-Torquato criterion: it is the
+width at which the level set of digitized overlapping disks (R = 10 and
+20 px) has the exact specific surface, i.e. the mean chord pi phi1 / s of
+Eq. (20). Chords shorter than about 3 px (gaps between nearly touching
+grains) are below the resolution of a pixel image whatever sigma: p(z) is
+validated from 3 px on, L(z) everywhere. Along a line, every position
+x in [0, T - z] whose segment [x, x + z] is in the phase lies in a run
+(a_k, b_k) with b_k - a_k >= z, so
+
+    L(z) = sum_k max(0, l_k - z) / (T - z)
+
+exactly, runs cut by the ends of the line included. p(z) uses complete chords
+only (both ends on the interface); a chord of length l is cut by the line's
+ends with probability about l / T, so each is weighted by T / (T - l)
+(Miles-Lantuejoul correction).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import xarray as xr
+from numba import njit
+
+from randmedia.io import VariableSpec
+
+
+@njit(cache=True)
+def _inside(field, threshold, x, y):
+    """Bilinear interpolation of ``field`` (values at pixel centres j+1/2, i+1/2) > threshold."""
+    ny, nx = field.shape
+    fx = x - 0.5
+    fy = y - 0.5
+    j0 = int(math.floor(fx))
+    i0 = int(math.floor(fy))
+    tx = fx - j0
+    ty = fy - i0
+    j1 = (j0 + 1) % nx
+    i1 = (i0 + 1) % ny
+    j0 %= nx
+    i0 %= ny
+    value = ((1 - ty) * ((1 - tx) * field[i0, j0] + tx * field[i0, j1])
+             + ty * ((1 - tx) * field[i1, j0] + tx * field[i1, j1]))
+    return value > threshold
+
+
+@njit(cache=True)
+def _walk(field, threshold, x0, y0, dx, dy, n_steps, step, runs, complete):
+    """Phase runs along one line; returns how many were written to runs/complete."""
+    count = 0
+    start = 0.0
+    inside = _inside(field, threshold, x0, y0)
+    starts_at_interface = False
+    for k in range(1, n_steps + 1):
+        x = x0 + k * step * dx
+        y = y0 + k * step * dy
+        now = _inside(field, threshold, x, y)
+        if now != inside:
+            boundary = (k - 0.5) * step
+            if inside:
+                runs[count] = boundary - start
+                complete[count] = starts_at_interface
+                count += 1
+            else:
+                start = boundary
+                starts_at_interface = True
+            inside = now
+    if inside:  # run cut by the end of the line
+        runs[count] = n_steps * step - start
+        complete[count] = False
+        count += 1
+    return count
+
+
+def smoothed_level_set(image: np.ndarray, phase: int, sigma: float) -> tuple[np.ndarray, float]:
+    """(field, threshold): the phase indicator Gaussian-filtered (periodic, width ``sigma``
+    pixels) and the threshold that keeps the phase's volume fraction (Ma-Torquato)."""
+    from scipy.ndimage import gaussian_filter
+
+    indicator = (np.asarray(image) == phase).astype(np.float64)
+    if sigma <= 0:
+        return indicator, 0.5
+    field = gaussian_filter(indicator, sigma, mode="wrap")
+    n_inside = int(indicator.sum())
+    ordered = np.sort(field.ravel())[::-1]
+    threshold = 0.5 * (ordered[n_inside - 1] + ordered[n_inside]) if 0 < n_inside < ordered.size \
+        else 0.5
+    return field, float(threshold)
+
+
+def sample_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *,
+                  n_directions: int = 32, lines_per_direction: int = 8,
+                  line_length: float | None = None, step: float = 0.1, sigma: float = 0.5):
+    """Runs of ``phase`` along random lines: (lengths, complete flags, line length T, n lines)."""
+    image = np.ascontiguousarray(image)
+    if image.ndim != 2:
+        raise ValueError(f"expected a 2D image, got shape {image.shape}")
+    field, threshold = smoothed_level_set(image, phase, sigma)
+    if n_directions < 1 or lines_per_direction < 1 or step <= 0:
+        raise ValueError("n_directions, lines_per_direction must be >= 1 and step > 0")
+    ny, nx = image.shape
+    length = float(line_length if line_length is not None else 4 * max(ny, nx))
+    n_steps = int(length / step)
+    length = n_steps * step
+    runs = np.empty(n_steps // 2 + 2)
+    complete = np.empty(n_steps // 2 + 2, dtype=np.bool_)
+    lengths, flags = [], []
+    offset = rng.random()
+    for d in range(n_directions):
+        theta = math.pi * (d + offset) / n_directions
+        for _ in range(lines_per_direction):
+            x0, y0 = rng.random() * nx, rng.random() * ny
+            count = _walk(field, threshold, x0, y0, math.cos(theta), math.sin(theta), n_steps,
+                          step, runs, complete)
+            lengths.append(runs[:count].copy())
+            flags.append(complete[:count].copy())
+    n_lines = n_directions * lines_per_direction
+    return np.concatenate(lengths), np.concatenate(flags), length, n_lines
+
+
+def lineal_path_from_runs(runs: np.ndarray, line_length: float, n_lines: int, z: np.ndarray):
+    """L(z) = sum_k max(0, l_k - z) / (n_lines (T - z)) for every z (all runs, cut ones too)."""
+    z = np.asarray(z, dtype=float)
+    if np.any(z >= line_length):
+        raise ValueError("z must be shorter than the sampling lines")
+    ordered = np.sort(runs)
+    tail_sum = np.concatenate([np.cumsum(ordered[::-1])[::-1], [0.0]])
+    first_longer = np.searchsorted(ordered, z, side="right")
+    n_longer = ordered.size - first_longer
+    return (tail_sum[first_longer] - z * n_longer) / (n_lines * (line_length - z))
+
+
+def chord_density_from_runs(runs, complete, line_length: float, edges: np.ndarray):
+    """p(z) on bins ``edges`` from complete chords, weighted T/(T - l); and the mean chord length."""
+    chords = runs[complete]
+    weights = line_length / (line_length - chords)
+    hist, _ = np.histogram(chords, bins=edges, weights=weights)
+    total = weights.sum()
+    density = hist / (total * np.diff(edges))
+    mean_chord = float(np.sum(weights * chords) / total)
+    return density, mean_chord
+
+
+def lineal_path_and_chords(images, phase: int, rng: np.random.Generator, *, z_max: float,
+                           dz: float = 0.5, chord_bin: float = 1.0, **sampling) -> xr.Dataset:
+    """L(z) and p(z) of ``phase`` for a stack of images, per sample, with mean and SEM."""
+    images = np.asarray(images)
+    if images.ndim != 3:
+        raise ValueError(f"expected images of shape (n_samples, ny, nx), got {images.shape}")
+    z = np.arange(0.0, z_max + 0.5 * dz, dz)
+    edges = np.arange(0.0, z_max + chord_bin, chord_bin)
+    n = images.shape[0]
+    lineal = np.empty((n, z.size))
+    density = np.empty((n, edges.size - 1))
+    mean_chord = np.empty(n)
+    for k, image in enumerate(images):
+        runs, complete, length, n_lines = sample_chords(image, phase, rng, **sampling)
+        lineal[k] = lineal_path_from_runs(runs, length, n_lines, z)
+        density[k], mean_chord[k] = chord_density_from_runs(runs, complete, length, edges)
+
+    def sem(values):
+        return values.std(axis=0, ddof=1) / np.sqrt(n) if n > 1 else np.full(values.shape[1:], np.nan)
+
+    centres = 0.5 * (edges[1:] + edges[:-1])
+    # Eq. (19): p(z) = (l_C / phi) L''(z), central second difference over +-2 px of the mean L
+    lag = max(1, int(round(2.0 / dz)))
+    mean_lineal = lineal.mean(axis=0)
+    second = np.full(z.size, np.nan)
+    second[lag:-lag] = (mean_lineal[2 * lag:] - 2 * mean_lineal[lag:-lag]
+                        + mean_lineal[:-2 * lag]) / (lag * dz) ** 2
+    p_from_lineal = mean_chord.mean() / mean_lineal[0] * second
+    return xr.Dataset(
+        {
+            "L_samples": (("sample", "z"), lineal, {"units": "1", "long_name": "lineal-path function per sample"}),
+            "L": ("z", lineal.mean(axis=0), {"units": "1", "long_name": "lineal-path function, sample mean"}),
+            "L_sem": ("z", sem(lineal), {"units": "1", "long_name": "standard error of L over samples"}),
+            "p_samples": (("sample", "z_chord"), density,
+                          {"units": "1/pixel", "long_name": "chord-length density per sample"}),
+            "p": ("z_chord", density.mean(axis=0),
+                  {"units": "1/pixel", "long_name": "chord-length density, sample mean"}),
+            "p_sem": ("z_chord", sem(density),
+                      {"units": "1/pixel", "long_name": "standard error of p over samples"}),
+            "p_from_L": ("z", p_from_lineal, {"units": "1/pixel", "long_name":
+                         "chord-length density from L''(z), Eq. (19), mean chord from sampling"}),
+            "mean_chord_samples": ("sample", mean_chord,
+                                   {"units": "pixel", "long_name": "mean chord length per sample"}),
+        },
+        coords={
+            "z": ("z", z, {"units": "pixel", "long_name": "segment length"}),
+            "z_chord": ("z_chord", centres, {"units": "pixel", "long_name": "chord length (bin centre)"}),
+            "sample": ("sample", np.arange(n), {"units": "1", "long_name": "sample index"}),
+        },
+        attrs={"phase": phase, "chord_bin": chord_bin},
+    )
+
+
+#: what a reader of a chords file requires
+CHORDS = {
+    "L": VariableSpec(("z",), "1"),
+    "L_sem": VariableSpec(("z",), "1"),
+    "p": VariableSpec(("z_chord",), "1/pixel"),
+    "p_sem": VariableSpec(("z_chord",), "1/pixel"),
+    "mean_chord_samples": VariableSpec(("sample",), "pixel"),
+}
