@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from randmedia.describe.chords import (chord_density_from_runs, lineal_path_and_chords,
+from randmedia.describe.chords import (bilinear_supersample, chord_density_from_runs, lineal_path_and_chords,
                                        lineal_path_from_runs, sample_chords, smoothed_level_set)
 from randmedia.generate.disks import overlapping_disks_image
 
@@ -26,10 +26,23 @@ def test_chord_density_is_normalized_and_weights_long_chords():
     assert mean_chord == pytest.approx(np.sum(w * [1.5, 2.5]) / w.sum())
 
 
-def test_level_set_keeps_volume_fraction():
+def test_bilinear_supersample_is_exact_on_linear_and_periodic_fields():
+    field = np.random.default_rng(0).random((7, 9))
+    fine = bilinear_supersample(field, 3)
+    np.testing.assert_allclose(fine[1::3, 1::3], field)  # sub-pixel centres on pixel centres
+    assert fine.mean() == pytest.approx(field.mean())  # periodic interpolation keeps the mean
+    ramp = np.tile(np.arange(8.0), (4, 1))  # linear in x away from the wrap
+    row = bilinear_supersample(ramp, 2)[0]
+    np.testing.assert_allclose(row[1:-1], np.arange(0.25, 7.0, 0.5))
+
+
+def test_level_set_area_equals_volume_fraction():
+    """The region the lines see (bilinear field > threshold) has the image's volume fraction,
+    measured on a finer sub-pixel grid than the one the threshold was chosen on."""
     image = overlapping_disks_image(np.random.default_rng(1), 101, 6.0, 0.3)
-    field, threshold = smoothed_level_set(image, 0, sigma=1.0)
-    assert np.count_nonzero(field > threshold) == np.count_nonzero(image == 0)
+    field, threshold = smoothed_level_set(image, 0, sigma=0.5)
+    area = np.mean(bilinear_supersample(field, 16) > threshold)
+    assert area == pytest.approx(np.mean(image == 0), abs=1e-3)
 
 
 def test_uniform_phase_gives_one_cut_run_per_line():
@@ -55,13 +68,21 @@ def test_lineal_path_of_overlapping_disks_matches_eq_38(disks_chords):
 
 
 def test_chord_density_of_overlapping_disks_matches_eq_39(disks_chords):
-    """Resolved chords (z >= 3 px) within 3 SEM; shorter ones lie below the pixel scale."""
+    """Resolved chords (z >= 3 px; shorter ones lie below the pixel scale) against Eq. (39).
+
+    The ~55 histogram bins are nearly independent and each SEM comes from 10
+    samples (t with 9 dof, P(|t| > 3) ~ 1.5 %), so "every bin within 3 SEM" would
+    fail by chance more often than not. Calibrated instead: chi^2 per bin of the
+    deviations in SEM units (expected 9/7 ~ 1.3 for t_9) below 2, and no bin beyond
+    5 SEM (a localized systematic)."""
     radius, phi2, ds = disks_chords
     eta = -np.log(1 - phi2)
     z = ds["z_chord"].values
     exact = 2 * eta / (np.pi * radius) * (1 - phi2) ** (2 * z / (np.pi * radius))
     resolved = z >= 3.0
-    assert np.all(np.abs(ds["p"].values - exact)[resolved] <= 3 * ds["p_sem"].values[resolved])
+    scores = ((ds["p"].values - exact) / ds["p_sem"].values)[resolved]
+    assert np.mean(scores**2) < 2.0
+    assert np.max(np.abs(scores)) < 5.0
 
 
 def test_mean_chord_of_overlapping_disks_is_pi_phi1_over_s(disks_chords):

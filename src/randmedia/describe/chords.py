@@ -92,20 +92,45 @@ def _walk(field, threshold, x0, y0, dx, dy, n_steps, step, runs, complete):
     return count
 
 
-def smoothed_level_set(image: np.ndarray, phase: int, sigma: float) -> tuple[np.ndarray, float]:
+def bilinear_supersample(field: np.ndarray, factor: int) -> np.ndarray:
+    """Periodic bilinear interpolation of ``field`` (values at pixel centres) at the
+    centres of a ``factor`` x ``factor`` grid of sub-pixels; shape (ny*factor, nx*factor)."""
+    ny, nx = field.shape
+    out = np.empty((ny * factor, nx * factor))
+    for a in range(factor):
+        ty = (a + 0.5) / factor - 0.5  # offset from the pixel centre, in (-1/2, 1/2)
+        rows = field if ty >= 0 else np.roll(field, 1, axis=0)
+        below = np.roll(field, -1, axis=0) if ty >= 0 else field
+        wy = ty if ty >= 0 else 1.0 + ty
+        column_mix = (1 - wy) * rows + wy * below
+        for b in range(factor):
+            tx = (b + 0.5) / factor - 0.5
+            left = column_mix if tx >= 0 else np.roll(column_mix, 1, axis=1)
+            right = np.roll(column_mix, -1, axis=1) if tx >= 0 else column_mix
+            wx = tx if tx >= 0 else 1.0 + tx
+            out[a::factor, b::factor] = (1 - wx) * left + wx * right
+    return out
+
+
+def smoothed_level_set(image: np.ndarray, phase: int, sigma: float,
+                       supersample: int = 4) -> tuple[np.ndarray, float]:
     """(field, threshold): the phase indicator Gaussian-filtered (periodic, width ``sigma``
-    pixels) and the threshold that keeps the phase's volume fraction (Ma-Torquato)."""
+    pixels) and the threshold at which the level-set medium -- the region where the
+    bilinear interpolation of the field exceeds it, which is what the lines sample -- has
+    the phase's volume fraction (Ma-Torquato). The area is measured on a
+    ``supersample``^2 sub-pixel grid; keeping the *count of pixel centres* instead
+    biases the level set's area by about +0.4 % on overlapping disks."""
     from scipy.ndimage import gaussian_filter
 
     indicator = (np.asarray(image) == phase).astype(np.float64)
     if sigma <= 0:
         return indicator, 0.5
     field = gaussian_filter(indicator, sigma, mode="wrap")
-    n_inside = int(indicator.sum())
-    ordered = np.sort(field.ravel())[::-1]
-    threshold = 0.5 * (ordered[n_inside - 1] + ordered[n_inside]) if 0 < n_inside < ordered.size \
-        else 0.5
-    return field, float(threshold)
+    fraction = indicator.mean()
+    if fraction in (0.0, 1.0):
+        return field, 0.5
+    fine = bilinear_supersample(field, supersample).ravel()
+    return field, float(np.quantile(fine, 1.0 - fraction))
 
 
 def sample_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *,
