@@ -113,66 +113,45 @@ class Construction:
 # --------------------------------------------------------------------------- kernels
 
 
+@njit(cache=True, inline="always")
+def _shifted(x, side, di, dj):
+    """Index of pixel x shifted by (di, dj) on the periodic side x side lattice (|d| < side)."""
+    i = x // side + di
+    j = x % side + dj
+    if i < 0:
+        i += side
+    elif i >= side:
+        i -= side
+    if j < 0:
+        j += side
+    elif j >= side:
+        j -= side
+    return i * side + j
+
+
+@njit(cache=True)
+def _scatter(h, side, x, offsets, column, sign):
+    """Add ``sign`` to the shell count of every pixel within l_c of x, in the bin of its offset."""
+    for k in range(offsets.shape[0]):
+        h[_shifted(x, side, offsets[k, 0], offsets[k, 1]), column[k]] += sign
+
+
 @njit(cache=True)
 def _shell_counts(image, side, offsets, column, n_columns):
     """h[x, c] = number of tracked pixels at displacements of bin c+1 from pixel x."""
     h = np.zeros((side * side, n_columns), dtype=np.int16)
     for x in range(side * side):
-        if image[x] == 0:
-            continue
-        i0 = x // side
-        j0 = x - i0 * side
-        for k in range(offsets.shape[0]):
-            i = i0 + offsets[k, 0]
-            j = j0 + offsets[k, 1]
-            if i < 0:
-                i += side
-            elif i >= side:
-                i -= side
-            if j < 0:
-                j += side
-            elif j >= side:
-                j -= side
-            h[i * side + j, column[k]] += 1
+        if image[x] == 1:
+            _scatter(h, side, x, offsets, column, 1)
     return h
-
-
-@njit(cache=True)
-def _scatter(h, side, x, offsets, column, sign):
-    i0 = x // side
-    j0 = x - i0 * side
-    for k in range(offsets.shape[0]):
-        i = i0 + offsets[k, 0]
-        j = j0 + offsets[k, 1]
-        if i < 0:
-            i += side
-        elif i >= side:
-            i -= side
-        if j < 0:
-            j += side
-        elif j >= side:
-            j -= side
-        h[i * side + j, column[k]] += sign
 
 
 @njit(cache=True)
 def _scan_counts(image, side, x, offsets, column, out):
     """out[c] = tracked pixels at displacements of bin c+1 from x, by scanning the disk."""
     out[:] = 0
-    i0 = x // side
-    j0 = x - i0 * side
     for k in range(offsets.shape[0]):
-        i = i0 + offsets[k, 0]
-        j = j0 + offsets[k, 1]
-        if i < 0:
-            i += side
-        elif i >= side:
-            i -= side
-        if j < 0:
-            j += side
-        elif j >= side:
-            j -= side
-        out[column[k]] += image[i * side + j]
+        out[column[k]] += image[_shifted(x, side, offsets[k, 0], offsets[k, 1])]
 
 
 @njit(cache=True)
