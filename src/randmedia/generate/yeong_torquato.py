@@ -307,9 +307,12 @@ class _Geometry:
         # S2_b = C_b / (N^2 n_b)
         self.norm = 1.0 / (side * side * self.binning.counts[1:].astype(float))
 
-    def s2(self, image_flat: np.ndarray) -> np.ndarray:
-        """S2 of the tracked phase per bin (0..n_b) from the shell counts, exactly."""
-        counts = _shell_counts(image_flat, self.side, self.offsets, self.column, self.n_columns)
+    def s2(self, image_flat: np.ndarray, counts: np.ndarray | None = None) -> np.ndarray:
+        """S2 of the tracked phase per bin (0..n_b), exactly, from the shell counts
+        (recounted from the image unless ``counts`` are given)."""
+        if counts is None:
+            counts = _shell_counts(image_flat, self.side, self.offsets, self.column,
+                                   self.n_columns)
         pair_sums = (counts[image_flat == 1].astype(np.int64)).sum(axis=0)
         return np.concatenate([[image_flat.mean()], pair_sums * self.norm])
 
@@ -389,7 +392,7 @@ def construct(
 
     h = (_shell_counts(image, side, geometry.offsets, geometry.column, geometry.n_columns)
          if not scan else np.zeros((1, geometry.n_columns), dtype=np.int16))
-    diff = geometry.s2(image)[1:] - target[1:]
+    diff = geometry.s2(image, None if scan else h)[1:] - target[1:]
     started, last_save = time.perf_counter(), time.perf_counter()
     trials_done = accepted_total = 0
     last_stage = schedule.n_stages + schedule.max_extra_stages
