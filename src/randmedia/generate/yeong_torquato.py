@@ -174,16 +174,23 @@ def _pair_column(p, q, side, cutoff, column_table):
 
 @njit(cache=True)
 def _is_candidate(image, side, x, interface_only):
+    """Can x be drawn? Every pixel, or in interface mode only those with a 4-neighbour
+    of the other phase."""
     if not interface_only:
         return True
-    i0 = x // side
-    j0 = x - i0 * side
     for n in range(4):
-        i = (i0 + _NEIGHBOURS[n, 0]) % side
-        j = (j0 + _NEIGHBOURS[n, 1]) % side
-        if image[i * side + j] != image[x]:
+        if image[_shifted(x, side, _NEIGHBOURS[n, 0], _NEIGHBOURS[n, 1])] != image[x]:
             return True
     return False
+
+
+@njit(cache=True)
+def _list_add_if_candidate(image, side, x, interface_only, members, sizes, slot):
+    if _is_candidate(image, side, x, interface_only):
+        ph = image[x]
+        members[ph, sizes[ph]] = x
+        slot[x] = sizes[ph]
+        sizes[ph] += 1
 
 
 @njit(cache=True)
@@ -191,14 +198,9 @@ def _build_lists(image, side, interface_only, members, sizes, slot):
     """members[phase, :sizes[phase]] = candidate pixels of each phase; slot = position or -1."""
     sizes[0] = 0
     sizes[1] = 0
+    slot[:] = -1
     for x in range(side * side):
-        if _is_candidate(image, side, x, interface_only):
-            ph = image[x]
-            members[ph, sizes[ph]] = x
-            slot[x] = sizes[ph]
-            sizes[ph] += 1
-        else:
-            slot[x] = -1
+        _list_add_if_candidate(image, side, x, interface_only, members, sizes, slot)
 
 
 @njit(cache=True)
@@ -215,17 +217,13 @@ def _list_remove(members, sizes, slot, ph, x):
 def _refresh(image, side, x, old_phase, interface_only, members, sizes, slot):
     if slot[x] >= 0:
         _list_remove(members, sizes, slot, old_phase, x)
-    if _is_candidate(image, side, x, interface_only):
-        ph = image[x]
-        members[ph, sizes[ph]] = x
-        slot[x] = sizes[ph]
-        sizes[ph] += 1
+    _list_add_if_candidate(image, side, x, interface_only, members, sizes, slot)
 
 
 @njit(cache=True)
 def _anneal(image, h, diff, norm, offsets, column, column_table, cutoff, side, n_trials,
             temperature, interface_only, scan, rng):
-    """Run ``n_trials`` Metropolis swap trials in place; returns (accepted, energy change)."""
+    """Run ``n_trials`` Metropolis swap trials in place; returns the number accepted."""
     n_columns = diff.shape[0]
     members = np.empty((2, side * side), dtype=np.int64)
     sizes = np.zeros(2, dtype=np.int64)
@@ -235,7 +233,6 @@ def _anneal(image, h, diff, norm, offsets, column, column_table, cutoff, side, n
     hp = np.empty(n_columns, dtype=np.int64)
     hq = np.empty(n_columns, dtype=np.int64)
     accepted = 0
-    energy_change = 0.0
     beta = 1.0 / temperature if temperature > 0 else np.inf
     for _ in range(n_trials):
         if sizes[0] == 0 or sizes[1] == 0:
@@ -262,7 +259,6 @@ def _anneal(image, h, diff, norm, offsets, column, column_table, cutoff, side, n
             if beta == np.inf or rng.random() >= math.exp(-d_energy * beta):
                 continue
         accepted += 1
-        energy_change += d_energy
         for c in range(n_columns):
             diff[c] += delta[c]
         image[p] = 0
@@ -275,13 +271,11 @@ def _anneal(image, h, diff, norm, offsets, column, column_table, cutoff, side, n
         _refresh(image, side, q, 0, interface_only, members, sizes, slot)
         if interface_only:
             for x in (p, q):
-                i0 = x // side
-                j0 = x - i0 * side
                 for n in range(4):
-                    y = ((i0 + _NEIGHBOURS[n, 0]) % side) * side + (j0 + _NEIGHBOURS[n, 1]) % side
+                    y = _shifted(x, side, _NEIGHBOURS[n, 0], _NEIGHBOURS[n, 1])
                     if y != p and y != q:
                         _refresh(image, side, y, image[y], interface_only, members, sizes, slot)
-    return accepted, energy_change
+    return accepted
 
 
 # --------------------------------------------------------------------------- driver
@@ -401,7 +395,7 @@ def construct(
         if stage >= schedule.n_stages and delta_s2 <= schedule.tolerance:
             break
         tic = time.perf_counter()
-        accepted, _ = _anneal(image, h, diff, geometry.norm, geometry.offsets, geometry.column,
+        accepted = _anneal(image, h, diff, geometry.norm, geometry.offsets, geometry.column,
                               geometry.column_table, geometry.cutoff, side, trials_per_stage,
                               temperature(stage), stage >= n_cool, scan, rng)
         stage += 1
