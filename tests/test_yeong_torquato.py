@@ -59,7 +59,7 @@ def test_converges_and_matches_independent_estimator(phi2):
     # the construction's own S2 equals the FFT estimator's, bin by bin
     fft = two_point_function(result.image[np.newaxis], phase=1, r_max=CUTOFF)
     np.testing.assert_allclose(result.s2, fft["S2"].values, atol=1e-14)
-    recomputed = s2_discrepancy(result.image[np.newaxis], 1, debye(phi2), CUTOFF)[0]
+    recomputed = s2_discrepancy(fft, debye(phi2), result.image.shape)[0]
     assert recomputed == pytest.approx(result.delta_s2, abs=1e-14)
 
 

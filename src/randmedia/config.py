@@ -93,14 +93,14 @@ def _cross_checks(config: dict) -> list[str]:
             )
     disks = config["debye2020"]["overlapping_disks"]
     chords = config["debye2020"]["chords"]
-    for section, side_key, length_key in (("media", "L", "a"), ("overlapping_disks", "L", "radius")):
+    for section, length_key in (("media", "a"), ("overlapping_disks", "radius")):
         values = config["debye2020"][section]
         z_max = chords["z_max_over_length"] * values[length_key]
-        if z_max >= 4 * values[side_key]:
+        if z_max >= 4 * values["L"]:
             problems.append(
                 "config key 'debye2020.chords.z_max_over_length': z_max = "
                 f"{z_max:g} pixels for {section} must be shorter than the 4 L = "
-                f"{4 * values[side_key]} pixel sampling lines"
+                f"{4 * values['L']} pixel sampling lines"
             )
     side, radius = disks["L"], disks["radius"]
     r_max = disks["s2_r_max_over_R"] * radius

@@ -1,10 +1,10 @@
 """Curve fits with uncertainties for the papers' empirical formulas.
 
-Every fit is weighted by the standard errors of the fitted curve
-(``absolute_sigma=True``, so parameter errors are statistical errors) and
-reports chi^2 per degree of freedom as its goodness of fit. Points of a
-sample-mean curve are correlated (they come from the same images), so
-chi^2/dof well below 1 is expected and the errors are conservative.
+A parameter's value and error come from fitting every sample separately and
+taking the mean and standard error over samples (:func:`per_sample_mean`);
+a fit weighted by the SEM of the sample-mean curve gives chi^2 per degree of
+freedom as the goodness of fit. Points of a sample-mean curve are correlated
+(they come from the same images), so chi^2/dof below 1 is expected.
 """
 
 from __future__ import annotations
@@ -13,6 +13,8 @@ from dataclasses import dataclass
 
 import numpy as np
 from scipy.optimize import curve_fit
+
+from randmedia.stats import standard_error
 
 
 @dataclass(frozen=True)
@@ -57,7 +59,7 @@ def per_sample_mean(fits: list[FitResult]) -> tuple[float, float]:
     values = np.array([f.value for f in fits])
     if values.size < 2:
         raise ValueError("need at least two samples for a standard error")
-    return float(values.mean()), float(values.std(ddof=1) / np.sqrt(values.size))
+    return float(values.mean()), float(standard_error(values))
 
 
 def r2_over_r(lineal_length: float, phi1: float) -> float:

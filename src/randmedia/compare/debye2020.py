@@ -15,6 +15,7 @@ import xarray as xr
 
 from randmedia.compare import compare
 from randmedia.describe.two_phase import RadialBinning
+from randmedia.stats import standard_error
 from randmedia.theory.overlapping import s2_void
 
 
@@ -59,17 +60,16 @@ def construction_numbers(s2_by_phi2: dict) -> "pd.DataFrame":
 
     rows = []
     for phi2, s2 in sorted(s2_by_phi2.items()):
-        n = s2.sizes["sample"]
         for name, where in (("delta_S2", "0 < r <= l_c"), ("delta_S2_full", "0 < r < L/2")):
             values = s2[name].values
             rows.append({
                 "quantity": f"mean_abs_S2_discrepancy ({where})",
                 "phi2": phi2,
                 "mean": values.mean(),
-                "sem": values.std(ddof=1) / np.sqrt(n) if n > 1 else np.nan,
+                "sem": standard_error(values),
                 "min": values.min(),
                 "max": values.max(),
-                "n_samples": n,
+                "n_samples": values.size,
                 "unit": "1",
                 "where": "Sec. IV (paper: 0.6e-4 to 2e-4)",
             })
@@ -100,7 +100,7 @@ def overlapping_disks_chord_rows(chords: xr.Dataset, *, radius: float, phi2: flo
         key="l_C/R",
         published=float(np.pi / (2 * eta)),
         ours=float(values.mean() / radius),
-        ours_sem=float(values.std(ddof=1) / np.sqrt(values.size) / radius),
+        ours_sem=float(standard_error(values) / radius),
         k_sigma=k_sigma,
     ))
     return rows

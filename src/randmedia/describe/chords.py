@@ -43,6 +43,7 @@ import xarray as xr
 from numba import njit
 
 from randmedia.io import VariableSpec
+from randmedia.stats import standard_error
 
 
 @njit(cache=True)
@@ -203,9 +204,6 @@ def lineal_path_and_chords(images, phase: int, rng: np.random.Generator, *, z_ma
         lineal[k] = lineal_path_from_runs(runs, length, n_lines, z)
         density[k], mean_chord[k] = chord_density_from_runs(runs, complete, length, edges)
 
-    def sem(values):
-        return values.std(axis=0, ddof=1) / np.sqrt(n) if n > 1 else np.full(values.shape[1:], np.nan)
-
     centres = 0.5 * (edges[1:] + edges[:-1])
     # Eq. (19): p(z) = (l_C / phi) L''(z), central second difference over +-2 px of the mean L
     lag = max(1, int(round(2.0 / dz)))
@@ -218,12 +216,12 @@ def lineal_path_and_chords(images, phase: int, rng: np.random.Generator, *, z_ma
         {
             "L_samples": (("sample", "z"), lineal, {"units": "1", "long_name": "lineal-path function per sample"}),
             "L": ("z", lineal.mean(axis=0), {"units": "1", "long_name": "lineal-path function, sample mean"}),
-            "L_sem": ("z", sem(lineal), {"units": "1", "long_name": "standard error of L over samples"}),
+            "L_sem": ("z", standard_error(lineal), {"units": "1", "long_name": "standard error of L over samples"}),
             "p_samples": (("sample", "z_chord"), density,
                           {"units": "1/pixel", "long_name": "chord-length density per sample"}),
             "p": ("z_chord", density.mean(axis=0),
                   {"units": "1/pixel", "long_name": "chord-length density, sample mean"}),
-            "p_sem": ("z_chord", sem(density),
+            "p_sem": ("z_chord", standard_error(density),
                       {"units": "1/pixel", "long_name": "standard error of p over samples"}),
             "p_from_L": ("z", p_from_lineal, {"units": "1/pixel", "long_name":
                          "chord-length density from L''(z), Eq. (19), mean chord from sampling"}),

@@ -27,6 +27,7 @@ import numpy as np
 import xarray as xr
 
 from randmedia.io import VariableSpec
+from randmedia.stats import standard_error
 
 
 @dataclass(frozen=True)
@@ -108,7 +109,7 @@ def two_point_function(
         curves[k] = binning.average(periodic_autocorrelation(indicator))
         fractions[k] = indicator.mean()
     n = curves.shape[0]
-    sem = curves.std(axis=0, ddof=1) / np.sqrt(n) if n > 1 else np.full(curves.shape[1], np.nan)
+    sem = standard_error(curves)
     r_attrs = {"units": "pixel", "long_name": "mean distance of the pixel pairs in the bin"}
     return xr.Dataset(
         {
@@ -140,12 +141,12 @@ TWO_POINT = {
 }
 
 
-def s2_discrepancy(images, phase: int, target_s2, r_max: float) -> np.ndarray:
-    """Delta S2 per sample (Ma & Torquato 2020, Sec. IV): mean over bins 0 < r <= r_max of
-    |S2 - target|, the target being the exact bin average of ``target_s2`` (the S2 of
-    ``phase``), i.e. the same bins and target the Yeong-Torquato construction uses."""
-    images = np.asarray(images)
-    binning = RadialBinning.build(images.shape[1:], r_max)
+def s2_discrepancy(s2: xr.Dataset, target_s2, image_shape) -> np.ndarray:
+    """Delta S2 per sample (Ma & Torquato 2020, Sec. IV): mean over the bins r > 0 of an
+    S2 dataset from :func:`two_point_function` of |S2 - target|, the target being the exact
+    bin average of ``target_s2`` over the same displacements -- the bins and target the
+    Yeong-Torquato construction uses when the dataset's r_max is its l_c."""
+    binning = RadialBinning.build(image_shape, float(s2.attrs["r_max"]),
+                                  float(s2.attrs["bin_width"]))
     target = binning.average_of(target_s2)
-    curves = two_point_function(images, phase, r_max)["S2_samples"].values
-    return np.abs(curves[:, 1:] - target[1:]).mean(axis=1)
+    return np.abs(s2["S2_samples"].values[:, 1:] - target[1:]).mean(axis=1)

@@ -20,8 +20,9 @@ r_full = params["L"] // 2 - 1
 s2 = two_point_function(images, phase=1, r_max=r_full)
 s2["S2_target"] = ("r", target(s2["r"].values),
                    {"units": "1", "long_name": "target S2 of phase 2, Eq. (21), at the bin label"})
-within = s2_discrepancy(images, 1, target, params["lc"])
-full = s2_discrepancy(images, 1, target, r_full)
+shape = images.shape[1:]
+within = s2_discrepancy(two_point_function(images, phase=1, r_max=params["lc"]), target, shape)
+full = s2_discrepancy(s2, target, shape)
 s2["delta_S2"] = ("sample", within, {"units": "1", "long_name":
                   "mean |S2 - target| over bins 0 < r <= l_c (the constructed range)"})
 s2["delta_S2_full"] = ("sample", full, {"units": "1", "long_name":
