@@ -43,3 +43,17 @@ def test_valid_config_is_not_mutated_beyond_defaults():
     before = copy.deepcopy(config)
     validate_config(config, SCHEMA)
     assert config == before  # quick.yaml already states every key
+
+
+def test_schema_includes_are_resolved_and_bad_includes_named(tmp_path):
+    from randmedia.config import load_schema
+
+    schema = load_schema(SCHEMA)
+    assert "$include" not in str(schema)
+    assert schema["properties"]["debye2020"]["properties"]["media"]["required"]
+    (tmp_path / "top.yaml").write_text("properties:\n  a:\n    $include: missing.yaml\n")
+    with pytest.raises(FileNotFoundError, match="missing.yaml"):
+        load_schema(tmp_path / "top.yaml")
+    (tmp_path / "loop.yaml").write_text("properties:\n  a:\n    $include: loop.yaml\n")
+    with pytest.raises(ValueError, match="cycle"):
+        load_schema(tmp_path / "loop.yaml")

@@ -50,8 +50,11 @@ def assert_same_data(first: Path, second: Path) -> None:
         for name in a.variables:
             np.testing.assert_array_equal(a[name].values, b[name].values, err_msg=str(relative))
         assert a.attrs["seed"] == b.attrs["seed"]
-    comparison = "results/debye2020/comparison.csv"
-    pd.testing.assert_frame_equal(pd.read_csv(first / comparison), pd.read_csv(second / comparison))
+    tables = sorted(p.relative_to(first) for p in (first / "results").rglob("*.csv"))
+    assert tables == sorted(p.relative_to(second) for p in (second / "results").rglob("*.csv"))
+    for relative in tables:  # comparison.csv, tables/*.csv of every paper
+        pd.testing.assert_frame_equal(pd.read_csv(first / relative), pd.read_csv(second / relative),
+                                      obj=str(relative))
 
 
 @pytest.mark.parametrize("extra", [(), QUICK], ids=["paper", "quick"])

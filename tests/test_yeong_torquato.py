@@ -8,9 +8,9 @@ import sys
 
 import numpy as np
 import pytest
-import yaml
 
 from conftest import SCHEMA
+from randmedia.config import load_schema
 from randmedia.describe.two_phase import s2_discrepancy, two_point_function
 from randmedia.generate.yeong_torquato import (AnnealingSchedule, ConstructionError, _Geometry,
                                                _shell_counts, construct)
@@ -107,8 +107,7 @@ def test_rejects_bad_length_scale_and_inconsistent_target():
 
 
 def test_schema_defaults_equal_package_defaults():
-    with open(SCHEMA) as handle:
-        schema = yaml.safe_load(handle)
+    schema = load_schema(SCHEMA)
     properties = schema["properties"]["debye2020"]["properties"]["media"]["properties"]
     defaults = {k: v["default"] for k, v in properties["schedule"]["properties"].items()}
     assert defaults == AnnealingSchedule().__dict__

@@ -82,24 +82,39 @@ def _looks_numeric(text: str) -> bool:
 
 
 def _cross_checks(config: dict) -> list[str]:
-    """Constraints between keys; run only on a schema-valid config."""
+    """Constraints between keys; run only on a schema-valid config. One function per
+    config section (:data:`CROSS_CHECKS`), each returning one line per problem."""
     problems = []
-    media = config["debye2020"]["media"]
+    for path, check in CROSS_CHECKS.items():
+        section = config
+        for key in path.split("."):
+            section = section[key]
+        problems += check(section, config)
+    return problems
+
+
+# --------------------------------------------------------------------------- debye2020
+
+
+def _debye2020_checks(section: dict, config: dict) -> list[str]:
+    """debye2020.media, .chords, .overlapping_disks: ranges that must fit the images."""
+    problems = []
+    media = section["media"]
     for key in ("a", "lc"):
         if media[key] >= media["L"] / 2:
             problems.append(
                 f"config key 'debye2020.media.{key}': {media[key]:g} must be < L/2 = "
                 f"{media['L'] / 2:g} (beyond half the periodic image a distance is not unique)"
             )
-    disks = config["debye2020"]["overlapping_disks"]
-    chords = config["debye2020"]["chords"]
-    for section, length_key in (("media", "a"), ("overlapping_disks", "radius")):
-        values = config["debye2020"][section]
+    disks = section["overlapping_disks"]
+    chords = section["chords"]
+    for part, length_key in (("media", "a"), ("overlapping_disks", "radius")):
+        values = section[part]
         z_max = chords["z_max_over_length"] * values[length_key]
         if z_max >= 4 * values["L"]:
             problems.append(
                 "config key 'debye2020.chords.z_max_over_length': z_max = "
-                f"{z_max:g} pixels for {section} must be shorter than the 4 L = "
+                f"{z_max:g} pixels for {part} must be shorter than the 4 L = "
                 f"{4 * values['L']} pixel sampling lines"
             )
     side, radius = disks["L"], disks["radius"]
@@ -126,9 +141,74 @@ def _cross_checks(config: dict) -> list[str]:
     return problems
 
 
+def _debye2020_hard_disks_checks(section: dict, config: dict) -> list[str]:
+    """debye2020.hard_disks (equilibrium hard disks, Sec. VI B)."""
+    return []
+
+
+# --------------------------------------------------------------------------- mrj2016
+
+
+def _mrj2016_equilibrium_checks(section: dict, config: dict) -> list[str]:
+    """mrj2016.equilibrium (hard-sphere liquid)."""
+    return []
+
+
+def _mrj2016_jammed_checks(section: dict, config: dict) -> list[str]:
+    """mrj2016.mrj (Torquato-Jiao MRJ packings)."""
+    return []
+
+
+def _mrj2016_checks(section: dict, config: dict) -> list[str]:
+    """mrj2016: the descriptor and output sections."""
+    return []
+
+
+# --------------------------------------------------------------------------- sphere2019
+
+
+def _sphere2019_checks(section: dict, config: dict) -> list[str]:
+    """sphere2019: point patterns, Monte Carlo fluids, cap statistics."""
+    return []
+
+
+#: config section (dotted path) -> its cross-check function
+CROSS_CHECKS = {
+    "debye2020": _debye2020_checks,
+    "debye2020.hard_disks": _debye2020_hard_disks_checks,
+    "mrj2016": _mrj2016_checks,
+    "mrj2016.equilibrium": _mrj2016_equilibrium_checks,
+    "mrj2016.mrj": _mrj2016_jammed_checks,
+    "sphere2019": _sphere2019_checks,
+}
+
+
 def load_schema(path: str | Path) -> dict:
+    """The schema at ``path`` with every ``{"$include": "file.yaml"}`` mapping replaced,
+    recursively, by the schema in that file (same folder). Each paper keeps its section
+    of the schema in a file of its own."""
+    path = Path(path)
     with open(path) as handle:
-        return yaml.safe_load(handle)
+        schema = yaml.safe_load(handle)
+    return _resolve_includes(schema, path.parent, (path.name,))
+
+
+def _resolve_includes(node, folder: Path, chain: tuple[str, ...]):
+    if isinstance(node, dict):
+        if set(node) == {"$include"}:
+            name = node["$include"]
+            if name in chain:
+                raise ValueError(f"schema include cycle: {' -> '.join(chain + (name,))}")
+            target = folder / name
+            if not target.is_file():
+                raise FileNotFoundError(f"{target}: schema file named by $include in {chain[-1]} "
+                                        "does not exist")
+            with open(target) as handle:
+                return _resolve_includes(yaml.safe_load(handle), folder, chain + (name,))
+        return {key: _resolve_includes(value, folder, chain) for key, value in node.items()}
+    if isinstance(node, list):
+        return [_resolve_includes(value, folder, chain) for value in node]
+    return node
 
 
 def validate_config(config: MutableMapping[str, Any], schema_path: str | Path) -> MutableMapping:
