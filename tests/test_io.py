@@ -177,3 +177,21 @@ def test_missing_file_and_missing_attribute(tmp_path, good_file):
     with pytest.raises(DataFileError, match=r"missing attributes \['phi2'\]") as error:
         read_dataset(good_file, SPEC, attrs=["phi2"])
     assert str(good_file) in str(error.value)
+
+
+def test_particle_config_round_trip_wraps_into_triclinic_cell(tmp_path):
+    from randmedia.generate import PARTICLE_CONFIG, particle_config_dataset
+    from randmedia.periodic import Cell
+
+    box = np.array([[5.0, 1.0, 0.0], [0.0, 5.0, 0.5], [0.0, 0.0, 5.0]])
+    positions = np.random.default_rng(0).normal(scale=6.0, size=(30, 3))
+    ds = particle_config_dataset(positions, box, 1.0, {"phi": 0.1})
+    path = write_dataset(ds, tmp_path / "c.nc", rule="t", seed=1, config={})
+    back = read_dataset(path, PARTICLE_CONFIG, attrs=["diameter", "phi"])
+    f = Cell(back["box"].values).fractional(back["position"].values)
+    assert np.all((f >= 0) & (f < 1))
+    # the same points, up to lattice translations
+    shift = Cell(box).fractional(back["position"].values - positions)
+    np.testing.assert_allclose(shift, np.rint(shift), atol=1e-9)
+    with pytest.raises(ValueError, match="diameter"):
+        particle_config_dataset(positions, box, 0.0, {})

@@ -30,3 +30,47 @@ def phase_image_dataset(image: np.ndarray, attrs: Mapping) -> xr.Dataset:
                     "flag_meanings": "phase1_void phase2_solid"})},
         attrs=dict(attrs),
     )
+
+
+# --------------------------------------------------------------------------- particle configurations
+
+#: what a reader of a periodic particle configuration requires (DESIGN.md contract:
+#: results/mrj2016/configs/{system}/sample{k}.nc); positions and box in units of D
+PARTICLE_CONFIG = {
+    "position": VariableSpec(("particle", "xyz"), "D"),
+    "box": VariableSpec(("xyz", "vec"), "D"),
+}
+
+
+def particle_config_dataset(positions: np.ndarray, box: np.ndarray, diameter: float,
+                            attrs: Mapping, *, units: str = "D") -> xr.Dataset:
+    """Wrap sphere centres in a periodic cell as the contract's Dataset.
+
+    ``positions`` (n, d) are wrapped into the cell whose lattice vectors are the
+    *columns* of ``box`` (d, d); ``diameter`` is the sphere diameter (attr
+    ``diameter``), in the same ``units`` (D = 1 for the mrj2016 systems). The
+    spatial dimension is named ``xyz`` whatever d (a 2D file has xyz of length 2).
+    """
+    from randmedia.periodic import Cell
+
+    positions = np.asarray(positions, dtype=np.float64)
+    cell = Cell(box)
+    if positions.ndim != 2 or positions.shape[1] != cell.dim:
+        raise ValueError(f"positions must have shape (n, {cell.dim}), got {positions.shape}")
+    if not diameter > 0:
+        raise ValueError(f"diameter must be > 0, got {diameter}")
+    axes = "xyz"[: cell.dim]
+    return xr.Dataset(
+        {
+            "position": (("particle", "xyz"), cell.wrap(positions),
+                         {"units": units, "long_name": "sphere centre (Cartesian, wrapped into the cell)"}),
+            "box": (("xyz", "vec"), cell.box,
+                    {"units": units, "long_name": "periodic cell: column k is lattice vector k"}),
+        },
+        coords={
+            "xyz": ("xyz", list(axes), {"units": "1", "long_name": "Cartesian axis"}),
+            "vec": ("vec", np.arange(cell.dim), {"units": "1", "long_name": "lattice vector index"}),
+        },
+        attrs={**dict(attrs), "diameter": float(diameter), "n_particles": positions.shape[0],
+               "dimension": cell.dim},
+    )
