@@ -3,7 +3,8 @@
 import numpy as np
 import pytest
 
-from randmedia.fit import FitResult, lineal_path_length, per_sample_mean, r2_over_r
+from randmedia.fit import FitResult, per_sample_mean
+from randmedia.fit.debye2020 import lineal_path_length, r2_over_r
 
 
 def test_lineal_path_length_recovers_known_value_within_its_error():

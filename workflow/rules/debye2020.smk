@@ -118,7 +118,7 @@ rule debye2020_fit_lineal_path:
     """L_w of Eq. (29) per phi2 and <R^2>/<R> of Eq. (30)."""
     input:
         chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
-        code=package_sources("fit.py"),
+        code=package_sources("fit/__init__.py", "fit/debye2020.py"),
     output:
         LINEAL_FITS,
     params:

@@ -16,7 +16,7 @@ import xarray as xr
 from randmedia.compare import compare
 from randmedia.describe.two_phase import RadialBinning
 from randmedia.stats import standard_error
-from randmedia.theory.overlapping import s2_void
+from randmedia.theory.overlapping import chord_rate, lineal_path_void, s2_void
 
 
 def overlapping_disks_s2_rows(
@@ -80,8 +80,6 @@ def overlapping_disks_chord_rows(chords: xr.Dataset, *, radius: float, phi2: flo
                                  compare_z_max: float, k_sigma: float) -> list[dict]:
     """L(z) of the void phase against Eq. (38) every R/2 up to ``compare_z_max``, and the
     mean chord against Eq. (20), l_C = pi phi1 / s = pi R / (2 eta) with s of Eq. (34)."""
-    phi1 = 1.0 - phi2
-    eta = -np.log(phi1)
     z = chords["z"].values
     rows = []
     for target in np.arange(0.0, compare_z_max + 1e-9, radius / 2):
@@ -89,7 +87,7 @@ def overlapping_disks_chord_rows(chords: xr.Dataset, *, radius: float, phi2: flo
         rows.append(compare(
             quantity=f"L_void_overlapping_disks_phi2={phi2:g}",
             key=f"z/R={z[i] / radius:.2f}",
-            published=float(phi1 ** (1 + 2 * z[i] / (np.pi * radius))),
+            published=float(lineal_path_void(z[i], radius, phi2, dim=2)),
             ours=float(chords["L"].values[i]),
             ours_sem=float(chords["L_sem"].values[i]),
             k_sigma=k_sigma,
@@ -98,7 +96,7 @@ def overlapping_disks_chord_rows(chords: xr.Dataset, *, radius: float, phi2: flo
     rows.append(compare(
         quantity=f"mean_chord_void_overlapping_disks_phi2={phi2:g}",
         key="l_C/R",
-        published=float(np.pi / (2 * eta)),
+        published=float(1.0 / (chord_rate(radius, phi2, dim=2) * radius)),
         ours=float(values.mean() / radius),
         ours_sem=float(standard_error(values) / radius),
         k_sigma=k_sigma,

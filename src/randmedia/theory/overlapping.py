@@ -1,44 +1,195 @@
-"""Exact two-point function of overlapping disks / spheres (Boolean model).
+"""Exact descriptors of overlapping disks and spheres (the Boolean model), d = 2 and 3.
 
-Ma & Torquato, PRE 102, 043310 (2020), Sec. VI A:
+Centres form a Poisson point process of intensity rho; the d-balls of radius R
+are phase 2, their complement is the void (matrix) phase 1. With the reduced
+density eta = rho v1(R), v1 = omega_d R^d (omega_d: volume of the unit d-ball,
+Ma & Torquato 2020, Eq. 8):
 
-* Eq. (32): S2^(1)(r) = exp(-rho v2(r; R)) for the void phase 1;
-* Eq. (33): the union area of two disks of radius R at centre distance r,
-  v2/v1 = 2 Theta(r - 2R) + (2/pi)[pi + x sqrt(1 - x^2) - arccos(x)] Theta(2R - r),
-  x = r / (2R), v1 = pi R^2;
-* phi1 = exp(-rho v1) = exp(-eta).
+* phi1 = exp(-eta)                                  (Ma & Torquato 2020, Sec. VI A)
+* S2^(1)(r) = exp(-rho v2(r; R))                    Eq. (32); v2 = union volume,
+  Eq. (33) for d = 2, Torquato, *Random Heterogeneous Materials* (RHM) Eq. (3.16)
+  v2/v1 = 1 + (3/4)(r/R) - (1/16)(r/R)^3 for d = 3, both = 2 for r >= 2R.
+* s = rho |dB_R| phi1 = d eta phi1 / R              Eq. (34) (d = 2: 2 eta phi1 / R;
+  d = 3, D = 2R: 6 phi1 ln(1/phi1) / D, Klatt & Torquato 2016 Sec. III A)
 
-The d = 3 union volume (Torquato, *Random Heterogeneous Materials*, Eq. 3.16)
-v2/v1 = 1 + (3/4)(r/R) - (1/16)(r/R)^3 for r < 2R serves the sphere models.
+Surface functions (void = phase 1). A point x of the interface lies on the
+sphere of one centre c (|x - c| = R) and in no other ball; Poisson
+independence gives
+
+* F_sv(r) = (s / phi1) f_out(r) S2^(1)(r)           Eq. (35) for d = 2
+  where f_out(r) is the fraction of the sphere |x - c| = R lying outside the
+  ball of radius R about x + r: with x = r/(2R) < 1, d = 2: 1 - arccos(x)/pi;
+  d = 3: (1 + x)/2; 1 for r >= 2R. (x + r must avoid c's own ball.)
+* F_ss(r) = S2^(1)(r) { [(s/phi1) f_out(r)]^2 + rho J(r) }      Eq. (36) for d = 2
+  where rho J(r) is the density of centres at distance R from both points,
+  J(r) = integral delta(|c| - R) delta(|c - r| - R) dc = (d-1) omega_{d-1}
+  (R sin t)^(d-2) R / (r sin t), cos t = r/(2R): d = 2: 2R / (r sqrt(1 - x^2));
+  d = 3: 2 pi R^2 / r; 0 for r >= 2R. As r -> 0, F_ss -> rho J phi1 =
+  (d-1) omega_{d-1} s / (d omega_d r), the divergence of Ma & Torquato 2020 Sec. II B.
+
+Pore sizes, exclusion probability, lineal path, chords:
+
+* F(delta) = exp(-eta [(1 + delta/R)^d - 1]), P = -dF/ddelta    Eq. (37) for d = 2
+* E_V(r) = exp(-rho omega_d r^d)  (the centres are Poisson)      Klatt & Torquato Eq. (20)
+* L(z) = phi1^(1 + omega_{d-1} z / (omega_d R))                  Eq. (38) for d = 2
+* p(z) = lambda exp(-lambda z), lambda = eta omega_{d-1} / (omega_d R),
+  mean chord 1/lambda = pi phi1/s (d = 2), 4 phi1/s (d = 3)       Eqs. (39), (20)
 """
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
+from scipy.integrate import quad
+from scipy.special import gamma
+
+
+def _check_dim(dim: int) -> None:
+    if dim not in (2, 3):
+        raise ValueError(f"dim must be 2 or 3, got {dim}")
+
+
+def _check(radius: float, phi2: float | None = None) -> None:
+    if radius <= 0:
+        raise ValueError(f"radius must be > 0, got {radius}")
+    if phi2 is not None and not 0.0 < phi2 < 1.0:
+        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
+
+
+def unit_ball_volume(dim: int) -> float:
+    """omega_d = pi^(d/2) / Gamma(1 + d/2) (Ma & Torquato 2020, Eq. 8); omega_1 = 2."""
+    return math.pi ** (dim / 2) / gamma(1 + dim / 2)
+
+
+def reduced_density(phi2: float) -> float:
+    """eta = rho v1 = -ln(phi1), from the volume fraction phi2 of the balls."""
+    _check(1.0, phi2)
+    return -math.log1p(-phi2)
+
+
+def number_density(phi2: float, radius: float, dim: int) -> float:
+    """rho = eta / (omega_d R^d)."""
+    _check_dim(dim)
+    _check(radius, phi2)
+    return reduced_density(phi2) / (unit_ball_volume(dim) * radius**dim)
 
 
 def union_volume_ratio(r, radius: float, dim: int = 2) -> np.ndarray:
     """v2(r; R) / v1(R): union of two d-balls of radius R, centres r apart (Eq. 33 for d=2)."""
     r = np.asarray(r, dtype=float)
-    if radius <= 0:
-        raise ValueError(f"radius must be > 0, got {radius}")
+    _check_dim(dim)
+    _check(radius)
     if np.any(r < 0):
         raise ValueError("distances must be >= 0")
     overlapping = r < 2.0 * radius
     if dim == 2:
         x = np.clip(r / (2.0 * radius), 0.0, 1.0)
         inside = (2.0 / np.pi) * (np.pi + x * np.sqrt(1.0 - x * x) - np.arccos(x))
-    elif dim == 3:
+    else:
         y = r / radius
         inside = 1.0 + 0.75 * y - y**3 / 16.0
-    else:
-        raise ValueError(f"dim must be 2 or 3, got {dim}")
     return np.where(overlapping, inside, 2.0)
 
 
 def s2_void(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
     """Eq. (32): S2 of the void phase, exp(-eta v2/v1) with eta = -ln(1 - phi2)."""
-    if not 0.0 < phi2 < 1.0:
-        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
-    eta = -np.log1p(-phi2)
-    return np.exp(-eta * union_volume_ratio(r, radius, dim))
+    _check(radius, phi2)
+    return np.exp(-reduced_density(phi2) * union_volume_ratio(r, radius, dim))
+
+
+def specific_surface(radius: float, phi2: float, dim: int) -> float:
+    """Eq. (34): s = d eta phi1 / R."""
+    _check_dim(dim)
+    _check(radius, phi2)
+    return dim * reduced_density(phi2) * (1.0 - phi2) / radius
+
+
+def _fraction_outside(r, radius: float, dim: int) -> np.ndarray:
+    """f_out(r): fraction of a radius-R sphere about x outside the radius-R ball about x + r."""
+    x = np.clip(np.asarray(r, dtype=float) / (2.0 * radius), 0.0, 1.0)
+    if dim == 2:
+        return 1.0 - np.arccos(x) / np.pi
+    return 0.5 * (1.0 + x)
+
+
+def _two_sphere_density(r, radius: float, dim: int) -> np.ndarray:
+    """J(r) = integral delta(|c| - R) delta(|c - r| - R) dc; 0 for r >= 2R (diverges at r = 0,
+    and for d = 2 also at r = 2R)."""
+    r = np.asarray(r, dtype=float)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        if dim == 2:
+            x = r / (2.0 * radius)
+            value = 2.0 * radius / (r * np.sqrt(1.0 - x * x))
+        else:
+            value = 2.0 * np.pi * radius**2 / r
+    return np.where(r < 2.0 * radius, value, 0.0)
+
+
+def surface_void(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
+    """F_sv(r) with the void (matrix) phase 1 (Eq. 35 for d = 2); F_sv(0) = s/2, F_sv(inf) = s phi1."""
+    _check_dim(dim)
+    s_over_phi1 = specific_surface(radius, phi2, dim) / (1.0 - phi2)
+    return s_over_phi1 * _fraction_outside(r, radius, dim) * s2_void(r, radius, phi2, dim)
+
+
+def surface_surface(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
+    """F_ss(r) (Eq. 36 for d = 2); F_ss(inf) = s^2, diverges as r -> 0 (and at r = 2R in 2D)."""
+    _check_dim(dim)
+    s_over_phi1 = specific_surface(radius, phi2, dim) / (1.0 - phi2)
+    rho = number_density(phi2, radius, dim)
+    pair = (s_over_phi1 * _fraction_outside(r, radius, dim)) ** 2
+    return s2_void(r, radius, phi2, dim) * (pair + rho * _two_sphere_density(r, radius, dim))
+
+
+def pore_size_complementary_cdf(delta, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
+    """F(delta) = exp(-eta [(1 + delta/R)^d - 1]) (RHM Ch. 5; integral of Eq. 37)."""
+    _check_dim(dim)
+    _check(radius, phi2)
+    delta = np.asarray(delta, dtype=float)
+    if np.any(delta < 0):
+        raise ValueError("pore sizes must be >= 0")
+    return np.exp(-reduced_density(phi2) * ((1.0 + delta / radius) ** dim - 1.0))
+
+
+def pore_size_density(delta, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
+    """P(delta) = -dF/ddelta = (d eta / R)(1 + delta/R)^(d-1) F(delta)   (Eq. 37 for d = 2)."""
+    F = pore_size_complementary_cdf(delta, radius, phi2, dim)
+    eta = reduced_density(phi2)
+    return dim * eta / radius * (1.0 + np.asarray(delta, float) / radius) ** (dim - 1) * F
+
+
+def pore_size_moment(n: int, radius: float, phi2: float, dim: int = 2) -> float:
+    """<delta^n> = n integral delta^(n-1) F(delta) ddelta (Eq. 18), by adaptive quadrature."""
+    if n < 1:
+        raise ValueError(f"moment order must be >= 1, got {n}")
+    value, _ = quad(lambda d: n * d ** (n - 1) * pore_size_complementary_cdf(d, radius, phi2, dim),
+                    0.0, np.inf, epsabs=0.0, epsrel=1e-11, limit=200)
+    return float(value)
+
+
+def exclusion_probability(r, rho: float, dim: int = 3) -> np.ndarray:
+    """E_V(r) = exp(-rho omega_d r^d): no Poisson centre within r of a random point."""
+    _check_dim(dim)
+    if rho <= 0:
+        raise ValueError(f"rho must be > 0, got {rho}")
+    return np.exp(-rho * unit_ball_volume(dim) * np.asarray(r, dtype=float) ** dim)
+
+
+def chord_rate(radius: float, phi2: float, dim: int = 2) -> float:
+    """lambda = eta omega_{d-1} / (omega_d R): inverse mean chord of the void phase."""
+    _check_dim(dim)
+    _check(radius, phi2)
+    return reduced_density(phi2) * unit_ball_volume(dim - 1) / (unit_ball_volume(dim) * radius)
+
+
+def lineal_path_void(z, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
+    """L(z) = phi1 exp(-lambda z) = phi1^(1 + omega_{d-1} z / (omega_d R))   (Eq. 38 for d = 2)."""
+    z = np.asarray(z, dtype=float)
+    return (1.0 - phi2) * np.exp(-chord_rate(radius, phi2, dim) * z)
+
+
+def chord_density_void(z, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
+    """p(z) = lambda exp(-lambda z)   (Eq. 39 for d = 2); mean chord 1/lambda (Eq. 20)."""
+    rate = chord_rate(radius, phi2, dim)
+    return rate * np.exp(-rate * np.asarray(z, dtype=float))

@@ -7,7 +7,8 @@ import numpy as np  # noqa: E402
 import xarray as xr  # noqa: E402
 
 from randmedia.describe.chords import CHORDS  # noqa: E402
-from randmedia.fit import lineal_path_length, per_sample_mean, r2_over_r  # noqa: E402
+from randmedia.fit import per_sample_mean  # noqa: E402
+from randmedia.fit.debye2020 import lineal_path_length, r2_over_r  # noqa: E402
 from randmedia.io import read_dataset, write_dataset  # noqa: E402
 
 params = dict(snakemake.params.items())  # noqa: F821

@@ -1,28 +1,13 @@
-"""Curve fits with uncertainties for the papers' empirical formulas.
-
-A parameter's value and error come from fitting every sample separately and
-taking the mean and standard error over samples (:func:`per_sample_mean`);
-a fit weighted by the SEM of the sample-mean curve gives chi^2 per degree of
-freedom as the goodness of fit. Points of a sample-mean curve are correlated
-(they come from the same images), so chi^2/dof below 1 is expected.
+"""Fits of Ma & Torquato, PRE 102, 043310 (2020): the lineal-path size L_w (Eq. 29)
+and <R^2>/<R> (Eq. 30). Conventions (per-sample fits, SEM, chi^2/dof): :mod:`randmedia.fit`.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 from scipy.optimize import curve_fit
 
-from randmedia.stats import standard_error
-
-
-@dataclass(frozen=True)
-class FitResult:
-    value: float
-    error: float
-    chi2_per_dof: float
-    n_points: int
+from randmedia.fit import FitResult
 
 
 def lineal_path_length(z, lineal_path, phi1: float, sem=None, *,
@@ -52,14 +37,6 @@ def lineal_path_length(z, lineal_path, phi1: float, sem=None, *,
     dof = max(1, keep.sum() - 1)
     chi2 = float(residual @ residual / dof) if weighted else float("nan")
     return FitResult(float(length), float(np.sqrt(covariance[0, 0])), chi2, int(keep.sum()))
-
-
-def per_sample_mean(fits: list[FitResult]) -> tuple[float, float]:
-    """Mean of per-sample fitted values and its standard error over samples."""
-    values = np.array([f.value for f in fits])
-    if values.size < 2:
-        raise ValueError("need at least two samples for a standard error")
-    return float(values.mean()), float(standard_error(values))
 
 
 def r2_over_r(lineal_length: float, phi1: float) -> float:
