@@ -105,3 +105,13 @@ def test_bin_labelling_bias_is_far_below_statistical_error():
     exact = lambda r: s2_void(r, radius, phi2)  # noqa: E731
     bias = np.abs(binning.average_of(exact) - exact(binning.r_mean))
     assert bias.max() < 1e-3
+
+
+def test_displacements_at_exactly_r_max_are_kept():
+    """(10, 0), (6, 8), ... lie at exactly r = 10: the last bin must hold all of them
+    (float fftfreq grids put some at 10.000000000000002 and dropped them)."""
+    binning = RadialBinning.build((101, 101), 10.0)
+    vectors = {tuple(v) for v in binning.displacements()}
+    for v in [(10, 0), (0, 10), (-10, 0), (6, 8), (-8, -6)]:
+        assert v in vectors
+    assert binning.counts[10] == sum(1 for v in vectors if round(np.hypot(*v)) == 10)

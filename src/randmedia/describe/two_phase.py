@@ -51,7 +51,9 @@ class RadialBinning:
                 f"r_max = {r_max:g} must be < min(shape)/2 = {min(shape) / 2:g} for a unique "
                 "periodic distance"
             )
-        axes = np.meshgrid(*[np.fft.fftfreq(n, d=1.0 / n) for n in shape], indexing="ij")
+        # integer minimal-image components in numpy's fftfreq order (0, 1, .., -1); exact
+        # integers, so a displacement at exactly r_max (e.g. (50, 0)) is not lost to rounding
+        axes = np.meshgrid(*[np.rint(np.fft.fftfreq(n) * n) for n in shape], indexing="ij")
         distance = np.sqrt(sum(a * a for a in axes)).ravel()
         flat_index = np.flatnonzero(distance <= r_max)
         distance = distance[flat_index]
