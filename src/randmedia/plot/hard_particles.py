@@ -12,8 +12,15 @@ def eos_validation_figure(frame, pooled: dict, settings, *, dim: int, phi: float
                           eos_names: dict, sample_msd: float, title: str, pdf_path) -> None:
     """(a) g(r) near contact from the pooled pair counts, the fitted polynomial and the EOS
     contact values; (b) per-sample contact-value pressure with the EOS values; (c) MSD
-    between consecutive samples of each chain against the required minimum."""
-    fig, (ax_g, ax_z, ax_m) = figure(3, 1, width=PAGE_WIDTH, aspect=0.95)
+    between consecutive samples of each chain against the required minimum; (d) when the
+    frame has bond order (3D): global Q6 and crystal-like fraction per sample."""
+    bond_order = "global_q6" in frame
+    if bond_order:
+        fig, axes = figure(2, 2, width=PAGE_WIDTH, aspect=0.6)
+    else:
+        fig, axes = figure(3, 1, width=PAGE_WIDTH, aspect=0.95)
+    axes = np.ravel(axes)
+    ax_g, ax_z, ax_m = axes[:3]
     hist = pooled["histogram"].astype(float)
     edges = 1.0 + np.linspace(0.0, settings.contact_range, len(hist) + 1)
     box, n = pooled["box"] / pooled["diameter"], pooled["n_particles"]
@@ -42,14 +49,26 @@ def eos_validation_figure(frame, pooled: dict, settings, *, dim: int, phi: float
                      label=f"{label}: {compressibility_factor(phi, dim, name):.4f}")
     ax_z.set_xlabel("sample")
     ax_z.set_ylabel(r"$\beta p/\rho$")
-    ax_z.set_title(title)
+    fig.suptitle(title, fontsize=9)
     ax_z.legend(fontsize=6)
 
     ax_m.plot(frame["sample"], frame["msd_since_previous"], "o", ms=2.5)
     ax_m.axhline(sample_msd, color="k", ls=":", lw=0.8, label="required")
     ax_m.set_xlabel("sample")
-    ax_m.set_ylabel(r"MSD since previous sample$/D^2$")
+    ax_m.set_ylabel(r"MSD since previous sample $/D^2$", fontsize=7)
     ax_m.set_ylim(bottom=0)
     ax_m.legend(fontsize=6)
+    if bond_order:
+        ax_q = axes[3]
+        ax_q.plot(frame["sample"], frame["global_q6"], "o", ms=2.5, label="global $Q_6$")
+        ax_q.plot(frame["sample"], frame["crystalline_fraction"], "s", ms=2.5,
+                  label="crystal-like fraction")
+        ax_q.axhline(1.0 / np.sqrt(pooled["n_particles"]), color="k", ls=":", lw=0.8,
+                     label="$N^{-1/2}$")
+        ax_q.set_yscale("symlog", linthresh=1e-3)
+        ax_q.set_ylim(0, 1)
+        ax_q.set_xlabel("sample")
+        ax_q.set_title("fcc 0.575, bcc 0.511", fontsize=7)
+        ax_q.legend(fontsize=6)
     fig.tight_layout()
     save_figure(fig, pdf_path)
