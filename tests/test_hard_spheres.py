@@ -50,6 +50,9 @@ def test_structure_factor_at_zero_wavenumber():
     p = 0.3
     derivative = ((1 + 3 * p**2 / 8) * (1 - p) + 2 * p * (1 + p**2 / 8)) / (1 - p) ** 3
     assert eos.structure_factor_zero(p, 2) == pytest.approx(1 / derivative, rel=1e-8)
+    # chi_V(0) = phi v1(D/2) S(0): liquid at 0.478, D = 1
+    assert eos.spectral_density_zero(0.478, 3) == pytest.approx(
+        0.478 * np.pi / 6 * eos.structure_factor_zero(0.478, 3))
 
 
 def test_eos_refuses_bad_input():

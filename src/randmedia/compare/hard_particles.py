@@ -13,6 +13,12 @@ Per-sample diagnostics (read from the sample files' attributes) and comparison r
 * digitized area fraction of the hard-disk images against N pi R^2 / L^2: for a
   translation-invariant ensemble every pixel centre is covered with probability
   N pi R^2 / L^2 (disks do not overlap), so this is the exact expectation; margin 0.
+* decorrelation: the normalized lag-one correlation of Fourier density modes between
+  consecutive samples of a chain, at the smallest wavevectors 2 pi / L (long-wavelength
+  fluctuations, the slowest collective modes behind S(0)) and near the first peak of
+  S(k) (k D ~ 7, local structure), against 0, its value for independent samples; the
+  standard error is that of independent complex-Gaussian modes. This checks, beyond the
+  MSD >= D^2 rule, that the samples are statistically independent.
 """
 
 from __future__ import annotations
@@ -75,3 +81,73 @@ def digitized_fraction_row(frame: pd.DataFrame, quantity: str, key: str, *, k_si
     values = frame["phi2_digitized"].to_numpy(float)
     return compare(quantity, key, float(frame["phi2_disks"].iloc[0]), float(values.mean()),
                    float(standard_error(values)), k_sigma=k_sigma)
+
+
+# --------------------------------------------------------------------------- decorrelation
+
+
+def density_modes(positions: np.ndarray, box_lengths, k_over_d: float | None = None) -> np.ndarray:
+    """Fourier density modes rho_k = sum_j exp(-i k.r_j) / sqrt(N) of one configuration.
+
+    ``k_over_d`` None: the smallest wavevectors of the periodic box, k = 2 pi n / L with n
+    the d unit vectors (the long-wavelength density fluctuations behind S(0)); else the
+    3 d axis wavevectors with |k| D closest to ``k_over_d`` and its two neighbours (e.g.
+    7, near the first peak of S(k) of the dense liquid), positions in units of D.
+    """
+    positions = np.asarray(positions, dtype=float)
+    box_lengths = np.asarray(box_lengths, dtype=float)
+    dim = positions.shape[1]
+    if k_over_d is None:
+        n_vectors = np.eye(dim)
+    else:
+        vectors = []
+        for axis in range(dim):
+            m = max(1, round(k_over_d * box_lengths[axis] / (2 * np.pi)))
+            for shift in (-1, 0, 1):
+                if m + shift >= 1:
+                    vector = np.zeros(dim)
+                    vector[axis] = m + shift
+                    vectors.append(vector)
+        n_vectors = np.array(vectors)
+    k = 2 * np.pi * n_vectors / box_lengths[None, :]
+    return np.exp(-1j * positions @ k.T).sum(axis=0) / np.sqrt(len(positions))
+
+
+def lag_one_correlation(chains: Sequence[Sequence[np.ndarray]]) -> tuple[float, float, int]:
+    """Normalized correlation of density modes between consecutive samples of each chain.
+
+    ``chains``: per chain, the mode vectors (:func:`density_modes`) of its samples in order.
+    C = sum Re[rho_k(t) rho_k(t+1)^*] / sqrt(sum |rho_k(t)|^2 sum |rho_k(t+1)|^2) over the
+    pairs and modes; for independent samples E[C] = 0 with standard error ~ 1/sqrt(pairs x
+    modes) (each mode a complex Gaussian). Returns (C, that standard error, number of pairs).
+    """
+    products, first, second, pairs, modes = 0.0, 0.0, 0.0, 0, 0
+    for chain in chains:
+        for a, b in zip(chain[:-1], chain[1:]):
+            products += float(np.sum((a * np.conj(b)).real))
+            first += float(np.sum(np.abs(a) ** 2))
+            second += float(np.sum(np.abs(b) ** 2))
+            pairs += 1
+            modes = len(a)
+    if pairs == 0:
+        return float("nan"), float("nan"), 0
+    # Re(a b*) of two independent complex Gaussians has variance |a|^2 |b|^2 / 2
+    return products / np.sqrt(first * second), 1.0 / np.sqrt(2.0 * pairs * modes), pairs
+
+
+def decorrelation_rows(datasets: Sequence, quantity: str, *, k_sigma: float,
+                       peak_k_over_d: float) -> list[dict]:
+    """Comparison rows: lag-one correlation of density modes between consecutive samples of
+    a chain (expected 0 for independent samples, the "published" value) at the smallest
+    wavevectors and near the first peak of S(k). Positions are converted to units of D."""
+    by_chain: dict[int, list] = {}
+    for ds in sorted(datasets, key=lambda d: (int(d.attrs["chain"]), int(d.attrs["sample"]))):
+        diameter = float(ds.attrs["diameter"])
+        box = np.diag(ds["box"].values) / diameter
+        by_chain.setdefault(int(ds.attrs["chain"]), []).append((ds["position"].values / diameter, box))
+    rows = []
+    for label, k in (("k=2pi/L", None), (f"kD~{peak_k_over_d:g}", peak_k_over_d)):
+        chains = [[density_modes(p, box, k) for p, box in chain] for chain in by_chain.values()]
+        c, se, pairs = lag_one_correlation(chains)
+        rows.append(compare(quantity, f"{label},pairs={pairs}", 0.0, c, se, k_sigma=k_sigma))
+    return rows

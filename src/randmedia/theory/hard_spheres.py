@@ -42,7 +42,8 @@ Derived quantities, for any of the above:
   * contact value of the pair correlation function, from the virial theorem
     beta p / rho = 1 + 2^(d-1) phi g(D+):  g(D+) = (Z - 1) / (2^(d-1) phi);
   * structure factor at k = 0 (Klatt & Torquato 2016, Eq. 32; the dashed line of their
-    Fig. 6): S(0) = rho k_B T kappa_T = [d(beta p)/d rho]^(-1) = [d(phi Z)/d phi]^(-1).
+    Fig. 6): S(0) = rho k_B T kappa_T = [d(beta p)/d rho]^(-1) = [d(phi Z)/d phi]^(-1),
+    and the spectral density chi_V(0) = phi v1(D/2) S(0) (their Eq. 14 at k = 0).
 
 Phase limits used to refuse input off the stable fluid branch: FLUID_LIMIT (d = 3:
 0.492, the freezing density of Fernandez et al., PRL 108, 165701 (2012); Hoover & Ree
@@ -173,3 +174,11 @@ def structure_factor_zero(phi, dim: int, eos: str | None = None):
     )
     s0 = 1.0 / derivative
     return s0 if np.ndim(s0) else float(s0)
+
+
+def spectral_density_zero(phi, dim: int, diameter: float = 1.0, eos: str | None = None):
+    """chi_V(k = 0) = rho |m(0)|^2 S(0) = phi v1(D/2) S(0) of the hard-particle packing
+    (Klatt & Torquato 2016, Eq. 14 at k = 0, with m(0) = v1(D/2) the particle volume): the
+    dashed line of the liquid in their Fig. 6, in units of D^d when diameter = 1."""
+    s0 = structure_factor_zero(phi, dim, eos)
+    return np.asarray(phi) * float(ball_volume(diameter / 2.0, dim)) * s0

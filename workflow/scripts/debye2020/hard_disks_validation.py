@@ -5,8 +5,9 @@ from randmedia.jobs import start_job
 log = start_job(snakemake)  # noqa: F821
 
 from randmedia.compare import comparison_frame  # noqa: E402
-from randmedia.compare.hard_particles import (diagnostics_frame, digitized_fraction_row,  # noqa: E402
-                                              pooled_contact, pressure_row)
+from randmedia.compare.hard_particles import (decorrelation_rows, diagnostics_frame,  # noqa: E402
+                                              digitized_fraction_row, pooled_contact,
+                                              pressure_row)
 from randmedia.generate import PHASE_IMAGE  # noqa: E402
 from randmedia.generate.hard_spheres import MCSettings  # noqa: E402
 from randmedia.io import VariableSpec, read_dataset, write_csv  # noqa: E402
@@ -17,7 +18,7 @@ spec = {**PHASE_IMAGE, "position": VariableSpec(("particle", "xyz"), "pixel"),
         "box": VariableSpec(("xyz", "vec"), "pixel"), "contact_pairs": VariableSpec(("contact_bin",), "1")}
 datasets = [read_dataset(path, spec, attrs=["reduced_pressure", "eos_reduced_pressure",
                                             "phi2_digitized", "phi2_disks", "n_particles",
-                                            "diameter", "contact_measurements"])
+                                            "diameter", "contact_measurements", "chain", "sample"])
             for path in snakemake.input.samples]  # noqa: F821
 settings = MCSettings(**params["mc"])
 frame = diagnostics_frame(datasets)
@@ -27,6 +28,8 @@ key = f"phi2={phi:.4f}"
 rows = [pressure_row(frame, "hard_disks_reduced_pressure", key, k_sigma=params["k_sigma"]),
         digitized_fraction_row(frame, "hard_disks_area_fraction_digitized", key,
                                k_sigma=params["k_sigma"])]
+rows += decorrelation_rows(datasets, "hard_disks_lag1_density_correlation",
+                           k_sigma=params["k_sigma"], peak_k_over_d=7.0)
 for row in rows:
     log.info("%s: ours %.5f +- %.5f, reference %.5f, tolerance %.5f, passed %s", row["quantity"],
              row["ours"], row["ours_sem"], row["published"], row["tolerance"], row["passed"])
