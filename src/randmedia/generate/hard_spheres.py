@@ -517,18 +517,18 @@ class HardParticleChain:
     def _block(self, measure: bool):
         """block_sweeps sweeps, measuring the contact histogram every measure_every sweeps."""
         s = self.settings
-        done, accepted_fraction = 0, []
+        done, accepted = 0, 0.0
         while done < s.block_sweeps:
             chunk = s.block_sweeps - done
             if measure:
                 to_measure = s.measure_every - (self.counters["sweeps"] % s.measure_every)
                 chunk = min(chunk, to_measure)
-            accepted_fraction.append(self._run(chunk))
+            accepted += self._run(chunk) * chunk
             done += chunk
             if measure and self.counters["sweeps"] % s.measure_every == 0:
                 self._scan(self.window_hist)
                 self.counters["window_measurements"] += 1
-        return float(np.mean(accepted_fraction))
+        return accepted / s.block_sweeps
 
     def msd(self) -> float:
         """Mean squared displacement since the last mark, in D^2."""
