@@ -3,6 +3,8 @@ papers' formulas, and our own Monte Carlo of equilibrium hard disks and spheres.
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -12,7 +14,7 @@ from scipy.spatial import cKDTree
 from randmedia.generate import hard_spheres as mc
 from randmedia.theory import scaled_particle as spt
 
-REFERENCE = __import__("pathlib").Path(__file__).resolve().parents[1] / "config" / "reference"
+REFERENCE = Path(__file__).resolve().parents[1] / "config" / "reference"
 
 
 def test_carnahan_starling_gives_torquatos_3d_coefficients():
