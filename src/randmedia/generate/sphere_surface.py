@@ -237,6 +237,13 @@ def icosahedral_grid(resolution: int, radius: float = 1.0) -> np.ndarray:
     check_radius(radius)
     vertices, faces = icosahedron()
     subdivisions = 2 * resolution - 1
+    grid = np.array([(i, j, subdivisions - i - j) for i in range(subdivisions + 1)
+                     for j in range(subdivisions + 1 - i)])
+    # All faces are congruent: move the grid once on face 0 and keep the moved points as
+    # barycentric weights of the face corners (P = w @ corners), valid on every face.
+    centre, corners = _face_frame(vertices, faces[0])
+    moved = _unadjust((grid / subdivisions) @ corners, centre, corners)
+    weights = moved @ np.linalg.inv(corners)
     edge_owner: dict[tuple[int, int], int] = {}
     vertex_owner: dict[int, int] = {}
     for f, face in enumerate(faces):
@@ -246,24 +253,15 @@ def icosahedral_grid(resolution: int, radius: float = 1.0) -> np.ndarray:
             vertex_owner.setdefault(int(p), f)
     points = []
     for f, face in enumerate(faces):
-        centre, corners = _face_frame(vertices, face)
-        weights = []
-        for i in range(subdivisions + 1):
-            for j in range(subdivisions + 1 - i):
-                bary = np.array([i, j, subdivisions - i - j])
-                zero = np.flatnonzero(bary == 0)
-                if zero.size == 1:  # on the edge opposite the zero weight
-                    others = tuple(sorted(int(face[k]) for k in range(3) if k != zero[0]))
-                    if edge_owner[others] != f:
-                        continue
-                elif zero.size == 2:  # a corner
-                    if vertex_owner[int(face[np.flatnonzero(bary)[0]])] != f:
-                        continue
-                weights.append(bary / subdivisions)
-        if not weights:
-            continue
-        planar = np.array(weights) @ corners
-        gnomonic = _unadjust(planar, centre, corners)
+        keep = np.ones(len(grid), dtype=bool)
+        for g, bary in enumerate(grid):
+            zero = np.flatnonzero(bary == 0)
+            if zero.size == 1:  # on the edge opposite the zero weight: one face owns it
+                others = tuple(sorted(int(face[k]) for k in range(3) if k != zero[0]))
+                keep[g] = edge_owner[others] == f
+            elif zero.size == 2:  # a corner: one face owns it
+                keep[g] = vertex_owner[int(face[np.flatnonzero(bary)[0]])] == f
+        gnomonic = weights[keep] @ _face_frame(vertices, face)[1]
         points.append(gnomonic / np.linalg.norm(gnomonic, axis=1)[:, None])
     points = np.concatenate(points)
     expected = 40 * resolution * (resolution - 1) + 12

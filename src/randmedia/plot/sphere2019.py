@@ -27,15 +27,29 @@ def _view_matrix(elevation: float, azimuth: float) -> np.ndarray:
 
 
 def render_sphere(ax, points: np.ndarray, radius: float, *, size: float = 4.0, colour="C0",
-                  title: str | None = None) -> None:
-    """Orthographic view of the points on the near hemisphere of the sphere of radius R."""
-    view = _view_matrix(*VIEW) @ (np.asarray(points, float) / radius).T
+                  title: str | None = None, diameter: float | None = None) -> None:
+    """Orthographic view of the points on the near hemisphere of the sphere of radius R;
+    with ``diameter``, particles are drawn as disks of that diameter (length unit of R),
+    foreshortened towards the rim."""
+    from matplotlib.collections import EllipseCollection
+    from matplotlib.colors import to_rgba
+
+    unit = np.asarray(points, float) / radius
+    view = _view_matrix(*VIEW) @ unit.T
     front = view[2] > 0
     depth = view[2, front]
     order = np.argsort(depth)
     ax.add_patch(_circle((0, 0), 1.0, facecolor="0.96", edgecolor="0.3", lw=0.6))
-    ax.scatter(view[0, front][order], view[1, front][order], s=size * (0.35 + 0.65 * depth[order]),
-               c=colour, alpha=None, linewidths=0, zorder=3)
+    x, y = view[0, front][order], view[1, front][order]
+    if diameter is None:
+        ax.scatter(x, y, s=size * (0.35 + 0.65 * depth[order]), c=colour, linewidths=0, zorder=3)
+    else:
+        width = np.full(x.size, diameter / radius)
+        shade = np.array([to_rgba(colour, 0.45 + 0.55 * d) for d in depth[order]])
+        ax.add_collection(EllipseCollection(
+            width, width * depth[order], np.degrees(np.arctan2(y, x)) + 90.0, units="xy",
+            offsets=np.column_stack([x, y]), offset_transform=ax.transData, facecolors=shade,
+            edgecolors="k", linewidths=0.3, zorder=3))
     ax.set_xlim(-1.05, 1.05)
     ax.set_ylim(-1.05, 1.05)
     ax.set_aspect("equal")
@@ -132,9 +146,9 @@ def fig02_regular(ico_points, ico: xr.Dataset, fib_points, fib: xr.Dataset, pdf_
     fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=1.0,
                        gridspec_kw={"width_ratios": [1, 1, 1.25], "wspace": 0.3})
     render_sphere(axes[0], ico_points, float(ico.attrs["R"]), size=3.0,
-                  title=f"(a) icosahedral grid, N = {len(ico_points)}")
+                  title=f"(a) icosahedral, N = {len(ico_points)}")
     render_sphere(axes[1], fib_points, float(fib.attrs["R"]), size=3.0, colour="C1",
-                  title=f"(b) Fibonacci grid, N = {len(fib_points)}")
+                  title=f"(b) Fibonacci, N = {len(fib_points)}")
     ax = axes[2]
     inset = ax.inset_axes([0.45, 0.45, 0.5, 0.45])
     for ds, name, colour in ((ico, "icosahedral", "C0"), (fib, "Fibonacci", "C1")):
@@ -251,11 +265,12 @@ def fig05_alpha(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 
 
 
 def fig06_snapshots(snapshots: dict[str, tuple[np.ndarray, float, str]], pdf_path) -> None:
-    """Fig. 6: one configuration per repulsion strength (points, R, label)."""
+    """Fig. 6: one configuration per repulsion strength (points, R, label); particles drawn
+    as disks of diameter d_LJ."""
     n = len(snapshots)
     fig, axes = figure(ncols=n, nrows=1, width=PAGE_WIDTH, aspect=1.0)
     for ax, (label, (points, radius, title)) in zip(np.atleast_1d(axes), snapshots.items()):
-        render_sphere(ax, points, radius, size=30.0, colour="C3", title=title)
+        render_sphere(ax, points, radius, colour="C3", title=title, diameter=1.0)
     save_figure(fig, pdf_path)
 
 
