@@ -86,7 +86,7 @@ rule sphere2019_describe:
     input:
         config=SPHERE_CONFIG,
         code=package_sources("describe/sphere_points.py", "theory/sphere_caps.py",
-                             "generate/sphere_surface.py", "seeding.py", "stats.py"),
+                             "generate/sphere_surface.py", "seeding.py"),
     output:
         SPHERE_DESCRIPTOR,
     wildcard_constraints:

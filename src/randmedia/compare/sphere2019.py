@@ -117,7 +117,9 @@ def comparison(table: pd.DataFrame, *, k_sigma: float, margin: float = EXPONENT_
 
 
 def run_summary(descriptors: dict[str, xr.Dataset]) -> pd.DataFrame:
-    """One row per Monte Carlo system: the run statistics the describe step carried over."""
+    """One row per Monte Carlo system: the run statistics the describe step carried over, and
+    production_sweeps / (2 tau) effectively independent samples of the energy and of the
+    three-origin counts in caps of a = 1 ("small") and a = R."""
     keys = ("potential", "coupling", "R", "n_particles", "temperature", "equilibration_sweeps",
             "production_sweeps", "frame_interval", "count_interval", "n_frames", "step",
             "acceptance_equilibration", "acceptance_production", "tau_energy_sweeps",
@@ -128,5 +130,10 @@ def run_summary(descriptors: dict[str, xr.Dataset]) -> pd.DataFrame:
     for system, ds in sorted(descriptors.items()):
         if ds.attrs.get("kind") != "fluid":
             continue
-        rows.append({"system": system, **{k: ds.attrs.get(k, np.nan) for k in keys}})
+        row = {"system": system, **{k: ds.attrs.get(k, np.nan) for k in keys}}
+        # effectively independent samples of the run for an observable of correlation time tau
+        for label, tau in (("small", "tau_caps_small_sweeps"), ("R", "tau_caps_R_sweeps"),
+                           ("energy", "tau_energy_sweeps")):
+            row[f"independent_samples_{label}"] = row["production_sweeps"] / (2.0 * row[tau])
+        rows.append(row)
     return pd.DataFrame(rows)

@@ -175,7 +175,7 @@ def fig03_uncorrelated(poisson_points, uniform_points, uniform: xr.Dataset, pois
 
     fig, _ = figure(width=PAGE_WIDTH, aspect=0.42)
     fig.clf()
-    grid = GridSpec(2, 3, figure=fig, width_ratios=[1, 1, 1.3])
+    grid = GridSpec(2, 3, figure=fig, width_ratios=[1, 1, 1.3], wspace=0.35)
     radius = float(uniform.attrs["R"])
     render_sphere(fig.add_subplot(grid[:, 0]), poisson_points, float(poisson.attrs["R"]), size=2.0,
                   colour="C2", title=rf"(a) Poisson, $\langle N\rangle$ = {poisson.attrs['mean_n_points']:.0f}")
@@ -283,7 +283,8 @@ def fig07_g2(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 0.0
     ax.axhline(1.0, color="0.5", lw=0.6, ls=":")
     ax.set_xlabel(r"$x$ (geodesic distance)")
     ax.set_ylabel(r"$g_2(x)$")
-    ax.set_xlim(0, 6)
+    radius = max((float(ds.attrs["R"]) for ds in descriptors.values()), default=1.0)
+    ax.set_xlim(0, min(np.pi * radius, 8.0))
     ax.legend(loc="upper right", fontsize=7)
     save_figure(fig, pdf_path)
 
@@ -303,5 +304,5 @@ def fig08_from_g2(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float 
     ax.set_xlabel(r"$a\rho^{1/2}$")
     ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
     ax.set_ylim(bottom=0)
-    ax.legend(loc="lower left", fontsize=6)
+    ax.legend(loc="upper right", fontsize=6)
     save_figure(fig, pdf_path)
