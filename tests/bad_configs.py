@@ -99,6 +99,28 @@ BAD_CONFIGS += [
     ("liquid_unknown_eos", _set(LIQUID + ("eos",), "percus_yevick"), "mrj2016.equilibrium.eos"),
 ]
 
+SPHERE_FLUIDS = ("sphere2019", "fluids")
+SPHERE_SYSTEMS = SPHERE_FLUIDS + ("systems",)
+
+BAD_CONFIGS += [
+    ("sphere_R_zero", _set(SPHERE_SYSTEMS + ("lj_R15", "R"), 0.0), "sphere2019.fluids.systems.lj_R15.R"),
+    ("sphere_density_negative", _set(SPHERE_FLUIDS + ("density",), -0.5), "sphere2019.fluids.density"),
+    ("sphere_temperature_zero", _set(SPHERE_FLUIDS + ("temperature",), 0.0),
+     "sphere2019.fluids.temperature"),
+    ("sphere_unknown_potential", _set(SPHERE_SYSTEMS + ("udc_R15", "potential"), "yukawa"),
+     "sphere2019.fluids.systems.udc_R15.potential"),
+    ("sphere_a_beyond_R", _set(("sphere2019", "fit", "a_max_over_R"), 1.5), "sphere2019.fit.a_max_over_R"),
+    ("sphere_unknown_run", _set(SPHERE_SYSTEMS + ("ucc_R15", "run"), "R30"),
+     "sphere2019.fluids.systems.ucc_R15.run"),
+    ("sphere_missing_system", _delete(SPHERE_SYSTEMS + ("udd_R15",)), "sphere2019.fluids.systems.udd_R15"),
+    ("sphere_frames_beyond_run", _set(SPHERE_FLUIDS + ("runs", "R5", "frame_interval"), 10**6),
+     "sphere2019.fluids.runs.R5.frame_interval"),
+    ("sphere_empty_fit_window", _set(("sphere2019", "fit", "a_min_rho_half"), 50.0),
+     "sphere2019.fit.a_min_rho_half"),
+    ("sphere_ico_resolution_one", _set(("sphere2019", "patterns", "icosahedral_resolution"), 1),
+     "sphere2019.patterns.icosahedral_resolution"),
+]
+
 
 def quick_config() -> dict:
     with open(QUICK) as handle:

@@ -218,7 +218,72 @@ def _mrj2016_checks(section: dict, config: dict) -> list[str]:
 
 def _sphere2019_checks(section: dict, config: dict) -> list[str]:
     """sphere2019: point patterns, Monte Carlo fluids, cap statistics."""
-    return []
+    import math
+
+    problems = []
+    caps, fit, patterns, fluids = (section[k] for k in ("caps", "fit", "patterns", "fluids"))
+    blocks = caps["n_blocks"]
+    required = ("lj_R15", "udd_R15", "uddpar_a1_R15", "udc_R15", "ucc_R15", "uddpar_a1_R5",
+                "uddpar_a3_R5", "uddpar_a6_R5")
+    missing = [name for name in required if name not in fluids["systems"]]
+    if missing:
+        problems.append(f"config key 'sphere2019.fluids.systems.{missing[0]}' is required (Table I "
+                        f"and Figs. 4-8 need the systems {', '.join(missing)})")
+    for name in ("icosahedral", "fibonacci", "uniform", "poisson"):
+        if name in fluids["systems"]:
+            problems.append(f"config key 'sphere2019.fluids.systems.{name}' is the name of a point "
+                            "pattern; choose another name for the fluid")
+    if patterns["uncorrelated_configs"] < blocks:
+        problems.append(f"config key 'sphere2019.patterns.uncorrelated_configs': "
+                        f"{patterns['uncorrelated_configs']} configurations cannot fill "
+                        f"caps.n_blocks = {blocks} jackknife blocks")
+    if caps["pattern_centres"] < blocks:
+        problems.append(f"config key 'sphere2019.caps.pattern_centres': {caps['pattern_centres']} "
+                        f"centres cannot fill caps.n_blocks = {blocks} jackknife blocks")
+    for name, run in fluids["runs"].items():
+        where = f"sphere2019.fluids.runs.{name}"
+        production = run["production_sweeps"]
+        if run["frame_interval"] > production:
+            problems.append(f"config key '{where}.frame_interval': {run['frame_interval']} exceeds "
+                            f"production_sweeps = {production} (no configuration would be stored)")
+        elif production // run["frame_interval"] < blocks:
+            problems.append(f"config key '{where}.frame_interval': production_sweeps / frame_interval "
+                            f"= {production // run['frame_interval']} stored configurations cannot "
+                            f"fill caps.n_blocks = {blocks} jackknife blocks")
+        if production // run["count_interval"] < max(blocks, 4):
+            problems.append(f"config key '{where}.count_interval': production_sweeps / count_interval "
+                            f"= {production // run['count_interval']} records; need >= "
+                            f"max(caps.n_blocks, 4) = {max(blocks, 4)}")
+
+    def window(where: str, radius: float, rho: float) -> None:
+        a_min, a_max = fit["a_min_rho_half"] / math.sqrt(rho), fit["a_max_over_R"] * radius
+        inside = sum(1 for k in range(1, caps["n_a"] + 1)
+                     if a_min <= radius * k / caps["n_a"] <= a_max)
+        if inside < 3:
+            problems.append(
+                f"config key 'sphere2019.fit.a_min_rho_half': the fit window a in [{a_min:.3g}, "
+                f"{a_max:.3g}] holds {inside} of the cap radii R k / n_a of {where} (R = {radius:g}); "
+                "need >= 3 (lower a_min_rho_half, raise a_max_over_R or caps.n_a)")
+
+    rho_fluid = fluids["density"]
+    for name, system in fluids["systems"].items():
+        where = f"sphere2019.fluids.systems.{name}"
+        if system["run"] not in fluids["runs"]:
+            problems.append(f"config key '{where}.run': {system['run']!r} is not a run of "
+                            f"sphere2019.fluids.runs ({', '.join(sorted(fluids['runs']))})")
+        n = round(rho_fluid * 4 * math.pi * system["R"] ** 2)
+        if not 2 <= n <= 65535:
+            problems.append(f"config key '{where}.R': N = round(rho 4 pi R^2) = {n} particles; "
+                            "need 2 <= N <= 65535")
+        else:
+            window(f"fluid {name}", system["R"], rho_fluid)
+    radius_u = patterns["uncorrelated_R"]
+    window("the uniform pattern", radius_u, patterns["uncorrelated_points"] / (4 * math.pi * radius_u**2))
+    for label, n in (("the icosahedral grid", 40 * patterns["icosahedral_resolution"]
+                      * (patterns["icosahedral_resolution"] - 1) + 12),
+                     ("the Fibonacci grid", patterns["fibonacci_points"])):
+        window(label, math.sqrt(n / (4 * math.pi * patterns["density"])), patterns["density"])
+    return problems
 
 
 #: config section (dotted path) -> its cross-check function

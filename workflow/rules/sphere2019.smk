@@ -1,7 +1,279 @@
 # Hyperuniformity on spherical surfaces, PRE 100, 022107 (2019).
 #
-# Nothing of this paper is built yet (issue #5), so it has no targets: the
-# named targets sphere2019, sphere2019_figNN and sphere2019_table1 are added
-# here with the science that produces them, never as placeholders.
+# generate: point patterns (Tegmark icosahedral grid, Fibonacci grid, uniform,
+#           Poisson; Secs. III-IV) and canonical Monte Carlo fluids (Sec. V)
+#           -> results/sphere2019/configs/{system}.nc
+# describe: number variance in spherical caps (random centres; for the fluids also
+#           the paper's three orthogonal origins per sweep), geodesic g2, sigma^2
+#           from g2 by Eq. (4)/(5) -> results/sphere2019/descriptors/{system}.nc
+# fit:      exponents delta of sigma^2 ~ a^delta -> results/sphere2019/fits/exponents.nc
+# render:   Table I, comparison.csv, Monte Carlo run summary, Figs. 1-8.
 
-SPHERE2019_TARGETS = []
+SPHERE = config["sphere2019"]
+SPHERE_PATTERNS = SPHERE["patterns"]
+SPHERE_FLUIDS = SPHERE["fluids"]
+SPHERE_CAPS = SPHERE["caps"]
+SPHERE_PATTERN_SYSTEMS = ["icosahedral", "fibonacci", "uniform", "poisson"]
+SPHERE_FLUID_SYSTEMS = list(SPHERE_FLUIDS["systems"])
+SPHERE_SYSTEMS = SPHERE_PATTERN_SYSTEMS + SPHERE_FLUID_SYSTEMS
+SPHERE_CONFIG = "results/sphere2019/configs/{system}.nc"
+SPHERE_DESCRIPTOR = "results/sphere2019/descriptors/{system}.nc"
+SPHERE_FITS = "results/sphere2019/fits/exponents.nc"
+SPHERE_R15 = ["lj_R15", "udd_R15", "uddpar_a1_R15", "udc_R15", "ucc_R15"]
+SPHERE_ALPHA = ["uddpar_a1_R5", "uddpar_a3_R5", "uddpar_a6_R5"]
+# Fig. 8 (sigma^2 from g2) also shows the LJ fluid at R = 5 when it is configured
+SPHERE_FIG08 = [s for s in ["lj_R5"] if s in SPHERE_FLUID_SYSTEMS] + SPHERE_ALPHA
+SPHERE_A_MIN_PLOT = SPHERE["fit"]["a_min_rho_half"] / SPHERE_FLUIDS["density"] ** 0.5
+
+
+def sphere_figure(number):
+    return {ext: f"results/sphere2019/figures/fig{number:02d}.{ext}" for ext in ("pdf", "png")}
+
+
+def sphere_descriptors(systems):
+    return expand(SPHERE_DESCRIPTOR, system=systems)
+
+
+rule sphere2019_pattern:
+    """A point pattern on the sphere (Secs. III-IV, Appendix)."""
+    input:
+        package_sources("generate/sphere_surface.py", "theory/sphere_caps.py", "seeding.py"),
+    output:
+        "results/sphere2019/configs/{system}.nc",
+    wildcard_constraints:
+        system="|".join(SPHERE_PATTERN_SYSTEMS),
+    params:
+        patterns=SPHERE_PATTERNS,
+        seed=config["seed"],
+    log:
+        "results/sphere2019/logs/config_{system}.log",
+    threads: 1
+    script:
+        "../scripts/sphere2019/pattern.py"
+
+
+rule sphere2019_fluid:
+    """Canonical Monte Carlo of one fluid on the sphere (Sec. V); checkpoints beside the
+    output and resumes."""
+    input:
+        package_sources("generate/sphere_mc.py", "generate/sphere_surface.py",
+                        "theory/sphere_caps.py", "seeding.py"),
+    output:
+        "results/sphere2019/configs/{system}.nc",
+    wildcard_constraints:
+        system="|".join(SPHERE_FLUID_SYSTEMS),
+    params:
+        fluid=lambda wildcards: SPHERE_FLUIDS["systems"][wildcards.system],
+        run=lambda wildcards: SPHERE_FLUIDS["runs"][SPHERE_FLUIDS["systems"][wildcards.system]["run"]],
+        density=SPHERE_FLUIDS["density"],
+        temperature=SPHERE_FLUIDS["temperature"],
+        target_acceptance=SPHERE_FLUIDS["target_acceptance"],
+        initial_step=SPHERE_FLUIDS["initial_step"],
+        checkpoint_seconds=SPHERE_FLUIDS["checkpoint_seconds"],
+        n_a=SPHERE_CAPS["n_a"],
+        seed=config["seed"],
+    log:
+        "results/sphere2019/logs/config_{system}.log",
+    threads: 1
+    resources:
+        mem_mb=2000,
+    script:
+        "../scripts/sphere2019/fluid.py"
+
+
+rule sphere2019_describe:
+    """Number variance in caps (both window-centre variants), g2 and Eq. (4)/(5)."""
+    input:
+        config=SPHERE_CONFIG,
+        code=package_sources("describe/sphere_points.py", "theory/sphere_caps.py",
+                             "generate/sphere_surface.py", "seeding.py"),
+    output:
+        SPHERE_DESCRIPTOR,
+    wildcard_constraints:
+        system="|".join(SPHERE_SYSTEMS),
+    params:
+        caps=SPHERE_CAPS,
+        seed=config["seed"],
+    log:
+        "results/sphere2019/logs/describe_{system}.log",
+    threads: 2
+    script:
+        "../scripts/sphere2019/describe.py"
+
+
+rule sphere2019_fit:
+    """Exponents delta of sigma^2 ~ a^delta for every system (Eq. 10, Table I)."""
+    input:
+        descriptors=sphere_descriptors(SPHERE_SYSTEMS),
+        code=package_sources("fit/__init__.py", "fit/power_law.py"),
+    output:
+        SPHERE_FITS,
+    params:
+        fit=SPHERE["fit"],
+    log:
+        "results/sphere2019/logs/fit.log",
+    script:
+        "../scripts/sphere2019/fit.py"
+
+
+rule sphere2019_table1:
+    """Table I (ours beside the published exponents) and the Monte Carlo run summary."""
+    input:
+        fits=SPHERE_FITS,
+        descriptors=sphere_descriptors(SPHERE_FLUID_SYSTEMS),
+        reference="config/reference/sphere2019_table1_exponents.csv",
+        code=package_sources("compare/__init__.py", "compare/sphere2019.py"),
+    output:
+        table="results/sphere2019/tables/table1.csv",
+        runs="results/sphere2019/tables/mc_runs.csv",
+    log:
+        "results/sphere2019/logs/table1.log",
+    script:
+        "../scripts/sphere2019/table1.py"
+
+
+rule sphere2019_comparison:
+    """results/sphere2019/comparison.csv: a row per Table I entry."""
+    input:
+        table="results/sphere2019/tables/table1.csv",
+        code=package_sources("compare/__init__.py", "compare/sphere2019.py"),
+    output:
+        "results/sphere2019/comparison.csv",
+    params:
+        k_sigma=config["comparison"]["k_sigma"],
+        margin=SPHERE["fit"]["exponent_margin"],
+    log:
+        "results/sphere2019/logs/comparison.log",
+    script:
+        "../scripts/sphere2019/comparison.py"
+
+
+rule sphere2019_fig01:
+    """Fig. 1: the spherical-cap window."""
+    input:
+        package_sources("plot/style.py", "plot/sphere2019.py"),
+    output:
+        **sphere_figure(1),
+    log:
+        "results/sphere2019/logs/fig01.log",
+    script:
+        "../scripts/sphere2019/fig01.py"
+
+
+rule sphere2019_fig02:
+    """Fig. 2: icosahedral and Fibonacci grids and their scaled number variance."""
+    input:
+        configs=expand(SPHERE_CONFIG, system=["icosahedral", "fibonacci"]),
+        descriptors=sphere_descriptors(["icosahedral", "fibonacci"]),
+        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+    output:
+        **sphere_figure(2),
+    log:
+        "results/sphere2019/logs/fig02.log",
+    script:
+        "../scripts/sphere2019/fig02.py"
+
+
+rule sphere2019_fig03:
+    """Fig. 3: Poisson and uniform points; Eqs. (6) and (7)."""
+    input:
+        configs=expand(SPHERE_CONFIG, system=["poisson", "uniform"]),
+        descriptors=sphere_descriptors(["poisson", "uniform"]),
+        code=package_sources("plot/style.py", "plot/sphere2019.py", "theory/sphere_caps.py"),
+    output:
+        **sphere_figure(3),
+    log:
+        "results/sphere2019/logs/fig03.log",
+    script:
+        "../scripts/sphere2019/fig03.py"
+
+
+rule sphere2019_fig04:
+    """Fig. 4: scaled number variance of the R = 15 fluids (inset: sigma^2*(a))."""
+    input:
+        descriptors=sphere_descriptors(SPHERE_R15),
+        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+    output:
+        **sphere_figure(4),
+    params:
+        figure="fig04_fluids",
+        a_min=SPHERE_A_MIN_PLOT,
+    log:
+        "results/sphere2019/logs/fig04.log",
+    script:
+        "../scripts/sphere2019/fluid_figure.py"
+
+
+rule sphere2019_fig05:
+    """Fig. 5: scaled number variance at R = 5 for alpha = 1, 3, 6."""
+    input:
+        descriptors=sphere_descriptors(SPHERE_ALPHA),
+        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+    output:
+        **sphere_figure(5),
+    params:
+        figure="fig05_alpha",
+        a_min=SPHERE_A_MIN_PLOT,
+    log:
+        "results/sphere2019/logs/fig05.log",
+    script:
+        "../scripts/sphere2019/fluid_figure.py"
+
+
+rule sphere2019_fig06:
+    """Fig. 6: snapshots for alpha = 1, 3, 6."""
+    input:
+        configs=expand(SPHERE_CONFIG, system=SPHERE_ALPHA),
+        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+    output:
+        **sphere_figure(6),
+    log:
+        "results/sphere2019/logs/fig06.log",
+    script:
+        "../scripts/sphere2019/fig06.py"
+
+
+rule sphere2019_fig07:
+    """Fig. 7: geodesic g2 for alpha = 1, 3, 6 (and LJ when configured)."""
+    input:
+        descriptors=sphere_descriptors(SPHERE_FIG08),
+        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+    output:
+        **sphere_figure(7),
+    params:
+        figure="fig07_g2",
+        a_min=0.0,
+    log:
+        "results/sphere2019/logs/fig07.log",
+    script:
+        "../scripts/sphere2019/fluid_figure.py"
+
+
+rule sphere2019_fig08:
+    """Fig. 8: scaled number variance from g2 by Eq. (4)."""
+    input:
+        descriptors=sphere_descriptors(SPHERE_FIG08),
+        code=package_sources("plot/style.py", "plot/sphere2019.py", "theory/sphere_caps.py"),
+    output:
+        **sphere_figure(8),
+    params:
+        figure="fig08_from_g2",
+        a_min=0.0,
+    log:
+        "results/sphere2019/logs/fig08.log",
+    script:
+        "../scripts/sphere2019/fluid_figure.py"
+
+
+SPHERE2019_FIGURES = [path for n in range(1, 9) for path in sphere_figure(n).values()]
+SPHERE2019_TARGETS = [
+    "results/sphere2019/comparison.csv",
+    "results/sphere2019/tables/table1.csv",
+    "results/sphere2019/tables/mc_runs.csv",
+] + SPHERE2019_FIGURES
+
+
+rule sphere2019:
+    """Everything of sphere2019: Table I, comparison, run summary, Figs. 1-8."""
+    input:
+        SPHERE2019_TARGETS,

@@ -1,0 +1,308 @@
+"""Figures of the sphere2019 pipeline (Figs. 1-8 of the paper).
+
+Descriptor files (:mod:`randmedia.describe.sphere_points`) carry sigma^2(a) for one
+or two window-centre variants, its jackknife SEM, g2 and sigma^2 from g2; every
+curve is drawn with a +-1 SEM band. Sphere renderings are orthographic views of
+the near hemisphere, points shaded by depth.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import xarray as xr
+
+from randmedia.plot.style import PAGE_WIDTH, figure, save_figure
+from randmedia.theory.sphere_caps import poisson_variance, uniform_variance
+
+VIEW = (np.deg2rad(20.0), np.deg2rad(30.0))  # elevation, azimuth of the viewer
+
+
+def _view_matrix(elevation: float, azimuth: float) -> np.ndarray:
+    """Rows: screen x, screen y, towards the viewer."""
+    ca, sa, ce, se = np.cos(azimuth), np.sin(azimuth), np.cos(elevation), np.sin(elevation)
+    towards = np.array([ce * ca, ce * sa, se])
+    right = np.array([-sa, ca, 0.0])
+    up = np.cross(towards, right)
+    return np.vstack([right, up, towards])
+
+
+def render_sphere(ax, points: np.ndarray, radius: float, *, size: float = 4.0, colour="C0",
+                  title: str | None = None, diameter: float | None = None) -> None:
+    """Orthographic view of the points on the near hemisphere of the sphere of radius R;
+    with ``diameter``, particles are drawn as disks of that diameter (length unit of R),
+    foreshortened towards the rim."""
+    from matplotlib.collections import EllipseCollection
+    from matplotlib.colors import to_rgba
+
+    unit = np.asarray(points, float) / radius
+    view = _view_matrix(*VIEW) @ unit.T
+    front = view[2] > 0
+    depth = view[2, front]
+    order = np.argsort(depth)
+    ax.add_patch(_circle((0, 0), 1.0, facecolor="0.96", edgecolor="0.3", lw=0.6))
+    x, y = view[0, front][order], view[1, front][order]
+    if diameter is None:
+        ax.scatter(x, y, s=size * (0.35 + 0.65 * depth[order]), c=colour, linewidths=0, zorder=3)
+    else:
+        width = np.full(x.size, diameter / radius)
+        shade = np.array([to_rgba(colour, 0.45 + 0.55 * d) for d in depth[order]])
+        ax.add_collection(EllipseCollection(
+            width, width * depth[order], np.degrees(np.arctan2(y, x)) + 90.0, units="xy",
+            offsets=np.column_stack([x, y]), offset_transform=ax.transData, facecolors=shade,
+            edgecolors="k", linewidths=0.3, zorder=3))
+    ax.set_xlim(-1.05, 1.05)
+    ax.set_ylim(-1.05, 1.05)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    if title:
+        ax.set_title(title)
+
+
+def _circle(centre, radius, **kwargs):
+    from matplotlib.patches import Circle
+
+    return Circle(centre, radius, **kwargs)
+
+
+def _band(ax, x, y, sem, label=None, colour=None, **kwargs):
+    line, = ax.plot(x, y, label=label, color=colour, **kwargs)
+    ax.fill_between(x, y - sem, y + sem, color=line.get_color(), alpha=0.25, lw=0)
+    return line
+
+
+def _scaled(ds: xr.Dataset, variant: str = "random_centres"):
+    rho = float(ds.attrs["density"])
+    s = ds["cap_area"].values
+    sigma2 = ds["sigma2"].sel(variant=variant).values
+    sem = ds["sigma2_sem"].sel(variant=variant).values
+    return ds["a"].values, sigma2 / (rho * s), sem / (rho * s), rho
+
+
+def _plain_log_ticks(ax) -> None:
+    """Log axes with plain-number major labels and no minor labels."""
+    from matplotlib.ticker import NullFormatter, ScalarFormatter
+
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_formatter(ScalarFormatter())
+        axis.set_minor_formatter(NullFormatter())
+
+
+def _panel_label(ax, label: str, x: float = 0.02, y: float = 0.97) -> None:
+    ax.text(x, y, f"({label})", transform=ax.transAxes, va="top", ha="left")
+
+
+# --------------------------------------------------------------------------- Fig. 1
+
+
+def fig01_cap_schematic(pdf_path) -> None:
+    """Fig. 1: the spherical-cap window of arc length x, area s and base radius a."""
+    from matplotlib.patches import Arc, Polygon
+
+    fig, ax = figure(aspect=0.9)
+    radius, phi = 1.0, np.deg2rad(50.0)
+    t = np.linspace(0, 2 * np.pi, 400)
+    ax.fill(np.cos(t), np.sin(t), color="#5b7db1", alpha=0.85, lw=0)
+    # the cap (white): the part of the disk above height cos(phi), seen side on
+    cap_t = np.linspace(np.pi / 2 - phi, np.pi / 2 + phi, 200)
+    ax.add_patch(Polygon(np.column_stack([np.cos(cap_t), np.sin(cap_t)]), closed=True,
+                         facecolor="white", edgecolor="k", lw=1.0, zorder=2))
+    # base of the cap drawn as an ellipse (the cap boundary circle in perspective)
+    a = radius * np.sin(phi)
+    h_base = radius * np.cos(phi)
+    e = np.linspace(0, 2 * np.pi, 200)
+    ax.plot(a * np.cos(e), h_base + 0.18 * a * np.sin(e), "k-", lw=0.8, zorder=3)
+    ax.plot(np.cos(t), np.sin(t), "k-", lw=1.0)
+    ax.plot([0, a], [h_base, h_base], "k--", lw=0.8, zorder=4)
+    ax.text(a / 2, h_base + 0.03, r"$a$", ha="center", va="bottom", zorder=5)
+    ax.plot([0, 0], [0, radius], "k:", lw=0.8)
+    ax.plot([0, a], [0, h_base], "k:", lw=0.8)
+    ax.add_patch(Arc((0, 0), 0.5, 0.5, theta1=90 - np.rad2deg(phi), theta2=90, lw=0.8))
+    ax.text(0.08, 0.3, r"$\phi$", ha="left")
+    ax.text(0.35, -0.15, r"$R$", ha="center")
+    ax.plot([0, 0], [0, 0], "k.", ms=4)
+    # arc length x from the pole to the cap edge
+    arc_t = np.linspace(np.pi / 2 - phi, np.pi / 2, 60)
+    ax.plot(1.07 * np.cos(arc_t), 1.07 * np.sin(arc_t), color="C3", lw=1.2)
+    ax.text(1.12 * np.cos(np.pi / 2 - phi / 2), 1.12 * np.sin(np.pi / 2 - phi / 2), r"$x = R\phi$",
+            color="C3", ha="left", va="bottom")
+    ax.text(-0.18, 0.9, r"$s$", ha="center", va="center", zorder=5)
+    ax.annotate("", xy=(0, radius + 0.03), xytext=(0, h_base - 0.0),
+                arrowprops=dict(arrowstyle="<->", lw=0.6), zorder=5)
+    ax.text(0.03, (radius + h_base) / 2 + 0.02, r"$h$", ha="left", va="center", fontsize=7)
+    ax.set_xlim(-1.25, 1.45)
+    ax.set_ylim(-1.1, 1.35)
+    ax.set_aspect("equal")
+    ax.axis("off")
+    ax.set_title(r"cap of base radius $a = R\sin\phi$, area $s = 2\pi R h$, $0 \leq \phi \leq \pi/2$")
+    save_figure(fig, pdf_path)
+
+
+# --------------------------------------------------------------------------- Figs. 2 and 3
+
+
+def fig02_regular(ico_points, ico: xr.Dataset, fib_points, fib: xr.Dataset, pdf_path) -> None:
+    """Fig. 2: (a) icosahedral (Tegmark) grid, (b) Fibonacci grid, (c) sigma^2/(rho s) vs
+    a rho^(1/2), inset sigma^2 vs a."""
+    fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=1.0,
+                       gridspec_kw={"width_ratios": [1, 1, 1.25], "wspace": 0.3})
+    render_sphere(axes[0], ico_points, float(ico.attrs["R"]), size=3.0,
+                  title=f"(a) icosahedral, N = {len(ico_points)}")
+    render_sphere(axes[1], fib_points, float(fib.attrs["R"]), size=3.0, colour="C1",
+                  title=f"(b) Fibonacci, N = {len(fib_points)}")
+    ax = axes[2]
+    inset = ax.inset_axes([0.45, 0.45, 0.5, 0.45])
+    for ds, name, colour in ((ico, "icosahedral", "C0"), (fib, "Fibonacci", "C1")):
+        a, scaled, sem, rho = _scaled(ds)
+        _band(ax, a * np.sqrt(rho), scaled, sem, label=name, colour=colour)
+        sigma2 = ds["sigma2"].sel(variant="random_centres").values
+        inset.plot(a, sigma2, color=colour)
+    ax.set_xlabel(r"$a\rho^{1/2}$")
+    ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
+    ax.set_ylim(bottom=0)
+    ax.legend(loc="center left", bbox_to_anchor=(0.3, 0.25))
+    inset.set_xlabel(r"$a$", fontsize=7, labelpad=1)
+    inset.set_ylabel(r"$\sigma_n^2$", fontsize=7, labelpad=1)
+    inset.tick_params(labelsize=6)
+    _panel_label(ax, "c")
+    save_figure(fig, pdf_path)
+
+
+def fig03_uncorrelated(poisson_points, uniform_points, uniform: xr.Dataset, poisson: xr.Dataset,
+                       pdf_path) -> None:
+    """Fig. 3: (a) Poisson and (b) uniform configurations; (c) sigma^2/(rho s) vs a/R with
+    Eq. (6) (uniform, canonical) and Eq. (7) (Poisson, grand canonical)."""
+    from matplotlib.gridspec import GridSpec
+
+    fig, _ = figure(width=PAGE_WIDTH, aspect=0.42)
+    fig.clf()
+    grid = GridSpec(2, 3, figure=fig, width_ratios=[1, 1, 1.3], wspace=0.35)
+    radius = float(uniform.attrs["R"])
+    render_sphere(fig.add_subplot(grid[:, 0]), poisson_points, float(poisson.attrs["R"]), size=2.0,
+                  colour="C2", title=rf"(a) Poisson, $\langle N\rangle$ = {poisson.attrs['mean_n_points']:.0f}")
+    render_sphere(fig.add_subplot(grid[:, 1]), uniform_points, radius, size=2.0, colour="C0",
+                  title=f"(b) uniform, N = {len(uniform_points)}")
+    top, bottom = fig.add_subplot(grid[0, 2]), fig.add_subplot(grid[1, 2])
+    for ax, ds, theory, label, colour in (
+            (top, uniform, uniform_variance, "uniform (canonical), Eq. (6)", "C0"),
+            (bottom, poisson, poisson_variance, "Poisson (grand canonical), Eq. (7)", "C2")):
+        a, scaled, sem, rho = _scaled(ds)
+        R = float(ds.attrs["R"])
+        _band(ax, a / R, scaled, sem, label="simulation", colour=colour)
+        fine = np.linspace(a[0], R, 200)
+        s = 2 * np.pi * R**2 * (1 - np.sqrt(1 - (fine / R) ** 2))
+        ax.plot(fine / R, theory(fine, R, rho) / (rho * s), "k--", lw=0.8, label=label)
+        ax.set_ylabel(r"$\sigma_n^2/(\rho s)$")
+        ax.legend(loc="lower left", fontsize=6)
+        ax.set_ylim(0.4, 1.15)
+    top.tick_params(labelbottom=False)
+    bottom.set_xlabel(r"$a/R$")
+    top.set_title("(c)")
+    save_figure(fig, pdf_path)
+
+
+# --------------------------------------------------------------------------- Figs. 4-8
+
+LABELS = {
+    "lj": "LJ", "udd": r"$U_{dd}$ (normal dipoles)", "uddpar": r"$U_{dd\parallel}$ ($1/r^3$)",
+    "udc": r"$U_{dc}$ ($1/r^2$)", "ucc": r"$U_{cc}$ ($1/r$)",
+}
+
+
+def _fluid_label(ds: xr.Dataset, with_coupling: bool = False) -> str:
+    label = LABELS[ds.attrs["potential"]]
+    if with_coupling and ds.attrs["potential"] != "lj":
+        symbol = {"udd": r"\alpha", "uddpar": r"\alpha", "udc": r"\gamma", "ucc": r"\beta"}[ds.attrs["potential"]]
+        label += rf", ${symbol} = {ds.attrs['coupling']:g}$"
+    return label
+
+
+def fig04_fluids(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 1.0) -> None:
+    """Fig. 4: sigma^2/(rho s) vs a rho^(1/2) at R = 15 (a >= a_min); inset: the normalized
+    sigma^2*(a) = sigma^2(a)/sigma^2(R) vs a with references ~a and ~a^2."""
+    fig, ax = figure(aspect=0.8)
+    inset = ax.inset_axes([0.55, 0.52, 0.42, 0.42])
+    for k, (system, ds) in enumerate(descriptors.items()):
+        a, scaled, sem, rho = _scaled(ds)
+        keep = a >= a_min
+        _band(ax, a[keep] * np.sqrt(rho), scaled[keep], sem[keep], label=_fluid_label(ds), colour=f"C{k}")
+        sigma2 = ds["sigma2"].sel(variant="random_centres").values
+        inset.loglog(a[keep], sigma2[keep] / sigma2[-1], color=f"C{k}")
+    if descriptors:
+        a = next(iter(descriptors.values()))["a"].values
+        a = a[a >= a_min]
+        inset.loglog(a, (a / a[-1]), "k:", lw=0.8, label=r"$\propto a$")
+        inset.loglog(a, (a / a[-1]) ** 2, "k--", lw=0.8, label=r"$\propto a^2$")
+        inset.legend(fontsize=6, loc="lower right")
+        R = float(next(iter(descriptors.values())).attrs["R"])
+        ax.set_title(rf"$R = {R:g}$, $\rho = {rho:.3g}$")
+    _plain_log_ticks(inset)
+    inset.set_xlabel(r"$a$", fontsize=7, labelpad=1)
+    inset.set_ylabel(r"$\sigma_n^{2*}(a)$", fontsize=7, labelpad=1)
+    inset.tick_params(labelsize=6, which="both")
+    ax.set_xlabel(r"$a\rho^{1/2}$")
+    ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
+    ax.set_ylim(bottom=0)
+    ax.legend(loc="lower left", fontsize=6)
+    save_figure(fig, pdf_path)
+
+
+def fig05_alpha(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 1.0) -> None:
+    """Fig. 5: sigma^2/(rho s) vs a rho^(1/2) at R = 5 for U_dd|| with alpha = 1, 3, 6."""
+    fig, ax = figure()
+    for k, (system, ds) in enumerate(descriptors.items()):
+        a, scaled, sem, rho = _scaled(ds)
+        keep = a >= a_min
+        _band(ax, a[keep] * np.sqrt(rho), scaled[keep], sem[keep],
+              label=_fluid_label(ds, True), colour=f"C{k}")
+    if descriptors:
+        R = float(next(iter(descriptors.values())).attrs["R"])
+        ax.set_title(rf"$U_{{dd\parallel}}$, $R = {R:g}$, $\rho = {rho:.3g}$")
+    ax.set_xlabel(r"$a\rho^{1/2}$")
+    ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
+    ax.set_ylim(bottom=0)
+    ax.legend(loc="lower left", fontsize=7)
+    save_figure(fig, pdf_path)
+
+
+def fig06_snapshots(snapshots: dict[str, tuple[np.ndarray, float, str]], pdf_path) -> None:
+    """Fig. 6: one configuration per repulsion strength (points, R, label); particles drawn
+    as disks of diameter d_LJ."""
+    n = len(snapshots)
+    fig, axes = figure(ncols=n, nrows=1, width=PAGE_WIDTH, aspect=1.0)
+    for ax, (label, (points, radius, title)) in zip(np.atleast_1d(axes), snapshots.items()):
+        render_sphere(ax, points, radius, colour="C3", title=title, diameter=1.0)
+    save_figure(fig, pdf_path)
+
+
+def fig07_g2(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 0.0) -> None:
+    """Fig. 7: geodesic g2(x) at R = 5 for increasing repulsion."""
+    fig, ax = figure()
+    for k, (system, ds) in enumerate(descriptors.items()):
+        _band(ax, ds["x"].values, ds["g2"].values, np.nan_to_num(ds["g2_sem"].values),
+              label=_fluid_label(ds, True), colour=f"C{k}", lw=0.9)
+    ax.axhline(1.0, color="0.5", lw=0.6, ls=":")
+    ax.set_xlabel(r"$x$ (geodesic distance)")
+    ax.set_ylabel(r"$g_2(x)$")
+    radius = max((float(ds.attrs["R"]) for ds in descriptors.values()), default=1.0)
+    ax.set_xlim(0, min(np.pi * radius, 8.0))
+    ax.legend(loc="upper right", fontsize=7)
+    save_figure(fig, pdf_path)
+
+
+def fig08_from_g2(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 0.0) -> None:
+    """Fig. 8: sigma^2/(rho s) from g2 by Eq. (4) (solid) against the direct window counts
+    (dotted), R = 5."""
+    fig, ax = figure()
+    for k, (system, ds) in enumerate(descriptors.items()):
+        a, scaled, sem, rho = _scaled(ds)
+        keep = a >= a_min
+        from_g2 = ds["sigma2_from_g2"].values / (rho * ds["cap_area"].values)
+        ax.plot(a[keep] * np.sqrt(rho), from_g2[keep], color=f"C{k}", label=_fluid_label(ds, True))
+        ax.plot(a[keep] * np.sqrt(rho), scaled[keep], color=f"C{k}", ls=":", lw=0.9)
+    ax.plot([], [], "k-", label="from $g_2$, Eq. (4)")
+    ax.plot([], [], "k:", label="window counts")
+    ax.set_xlabel(r"$a\rho^{1/2}$")
+    ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
+    ax.set_ylim(bottom=0)
+    ax.legend(loc="upper right", fontsize=6)
+    save_figure(fig, pdf_path)

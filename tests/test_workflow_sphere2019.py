@@ -1,0 +1,106 @@
+"""sphere2019 through Snakemake on the quick config (the session's quick_run): file contracts,
+Table I and its comparison rows with tolerances from the fit uncertainty, Monte Carlo records."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from randmedia.compare import COLUMNS
+from randmedia.describe.sphere_points import CAP_VARIANCE
+from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of
+from randmedia.io import PROVENANCE_ATTRS, read_dataset
+
+pytestmark = pytest.mark.workflow
+
+SYSTEMS = ["icosahedral", "fibonacci", "uniform", "poisson", "lj_R15", "udd_R15", "uddpar_a1_R15",
+           "udc_R15", "ucc_R15", "uddpar_a1_R5", "uddpar_a3_R5", "uddpar_a6_R5"]
+
+
+@pytest.fixture(scope="module")
+def quick(quick_run):
+    with open(quick_run / "config" / "quick.yaml") as handle:
+        return quick_run, yaml.safe_load(handle)["sphere2019"]
+
+
+def test_every_sphere2019_target_exists(quick):
+    workdir, _ = quick
+    outputs = ["comparison.csv", "tables/table1.csv", "tables/mc_runs.csv", "fits/exponents.nc"]
+    outputs += [f"figures/fig{n:02d}.{ext}" for n in range(1, 9) for ext in ("pdf", "png")]
+    for relative in outputs:
+        assert (workdir / "results/sphere2019" / relative).stat().st_size > 0, relative
+
+
+@pytest.mark.parametrize("system", SYSTEMS)
+def test_configuration_files_follow_the_contract(quick, system):
+    workdir, section = quick
+    ds = read_dataset(workdir / f"results/sphere2019/configs/{system}.nc", SPHERE_CONFIG, attrs=["R"])
+    assert all(key in ds.attrs for key in PROVENANCE_ATTRS)
+    assert ds["position"].dims == ("frame", "particle", "xyz")
+    for name in ds.variables:
+        assert {"units", "long_name"} <= set(ds[name].attrs), name
+    radius = float(ds.attrs["R"])
+    for frame in frames_of(ds):
+        np.testing.assert_allclose(np.linalg.norm(frame, axis=1), radius, rtol=1e-9)
+    if system == "poisson":  # grand canonical: frames differ in size, NaN rows pad them
+        assert len(set(ds["n_points"].values)) > 1 and np.isnan(ds["position"].values).any()
+    elif system in section["fluids"]["systems"]:
+        fluid = section["fluids"]["systems"][system]
+        assert radius == fluid["R"]
+        assert int(ds["n_points"].values[0]) == round(section["fluids"]["density"] * 4 * np.pi * radius**2)
+        assert ds.attrs["potential"] == fluid["potential"]
+
+
+def test_table1_and_comparison_rows(quick):
+    workdir, section = quick
+    reference = pd.read_csv(workdir / "config/reference/sphere2019_table1_exponents.csv")
+    table = pd.read_csv(workdir / "results/sphere2019/tables/table1.csv")
+    comparison = pd.read_csv(workdir / "results/sphere2019/comparison.csv")
+    assert len(table) == len(reference) == len(comparison)
+    assert tuple(comparison.columns) == COLUMNS
+    deviation = (comparison["ours"] - comparison["published"]).abs()
+    assert (comparison["passed"] == (deviation <= comparison["tolerance"])).all()
+    margin = section["fit"]["exponent_margin"]
+    exponents = comparison[comparison["quantity"] == "number_variance_exponent_delta"]
+    np.testing.assert_allclose(exponents["tolerance"], 3.0 * exponents["ours_sem"] + margin)
+    assert (table["delta_err"] > 0).all() and np.isfinite(table["delta"]).all()
+    fluids = table[table["system"].isin(section["fluids"]["systems"])]
+    assert np.isfinite(fluids["delta_three_origins"]).all() and (fluids["delta_three_origins_err"] > 0).all()
+
+
+def test_quick_table_entries_with_known_answers(quick):
+    """Poisson: sigma^2/(<rho> s) = 1 (Eq. 7) and uniform: delta = 2 (Eq. 6, sigma^2 = rho pi a^2)
+    within 3 x their fit uncertainty; the two lattices within the stated 0.15 of delta = 1."""
+    workdir, _ = quick
+    table = pd.read_csv(workdir / "results/sphere2019/tables/table1.csv").set_index("system")
+    poisson = table.loc["poisson"]
+    assert abs(poisson["scaled_variance_mean"] - 1.0) <= 3 * poisson["scaled_variance_mean_err"]
+    uniform = table.loc["uniform"]
+    assert abs(uniform["delta"] - 2.0) <= 3 * uniform["delta_err"]
+    for lattice in ("icosahedral", "fibonacci"):
+        assert abs(table.loc[lattice, "delta"] - 1.0) <= 0.15 + 3 * table.loc[lattice, "delta_err"]
+
+
+def test_descriptors_two_variants_agree_for_the_fluids(quick):
+    """Random centres per stored frame and the paper's three origins per sweep estimate the same
+    sigma^2(a): their difference is within a few combined standard errors."""
+    workdir, section = quick
+    for system in section["fluids"]["systems"]:
+        ds = read_dataset(workdir / f"results/sphere2019/descriptors/{system}.nc", CAP_VARIANCE)
+        sigma2, sem = ds["sigma2"].values, ds["sigma2_sem"].values
+        z = np.abs(sigma2[0] - sigma2[1]) / np.hypot(sem[0], sem[1])
+        assert np.median(z) < 2.0 and z.max() < 5.0, (system, z)
+
+
+def test_monte_carlo_runs_are_recorded(quick):
+    workdir, section = quick
+    runs = pd.read_csv(workdir / "results/sphere2019/tables/mc_runs.csv").set_index("system")
+    assert set(section["fluids"]["systems"]) == set(runs.index)
+    target = section["fluids"]["target_acceptance"]
+    assert (abs(runs["acceptance_production"] - target) < 0.15).all()
+    assert (runs["energy_drift_production"] < 1e-8).all()
+    assert (runs["tau_energy_sweeps"] >= 0.5).all() and (runs["tau_caps_R_sweeps"] >= 0.5).all()
+    # stored frames are at least one energy correlation time apart
+    assert (runs["frame_interval"] >= runs["tau_energy_sweeps"]).all()

@@ -1,0 +1,22 @@
+"""Rule sphere2019_fit: exponents delta of sigma^2 ~ a^delta (Eq. 10, Table I)."""
+from randmedia.jobs import start_job
+
+log = start_job(snakemake)  # noqa: F821
+
+from randmedia.describe.sphere_points import CAP_VARIANCE  # noqa: E402
+from randmedia.fit.power_law import sphere_exponents  # noqa: E402
+from randmedia.io import read_dataset, write_dataset  # noqa: E402
+
+fit = dict(snakemake.params.fit)  # noqa: F821
+descriptors = {}
+for path in snakemake.input.descriptors:  # noqa: F821
+    ds = read_dataset(path, CAP_VARIANCE, attrs=["system", "R", "density", "ensemble"])
+    descriptors[ds.attrs["system"]] = ds
+fits = sphere_exponents(descriptors, a_min_rho_half=fit["a_min_rho_half"],
+                        a_max_over_R=fit["a_max_over_R"])
+for system in fits["system"].values:
+    f = fits.sel(system=system)
+    log.info("%-14s delta = %.3f +- %.3f (three origins %.3f +- %.3f), a in [%.3g, %.3g]", system,
+             float(f["delta"]), float(f["delta_err"]), float(f["delta_three_origins"]),
+             float(f["delta_three_origins_err"]), float(f["fit_a_min"]), float(f["fit_a_max"]))
+write_dataset(fits, snakemake.output[0], rule=snakemake.rule, seed=None, config=fit)  # noqa: F821

@@ -1,0 +1,42 @@
+"""Rule sphere2019_pattern: one point pattern on the sphere (Secs. III-IV, Appendix)."""
+from randmedia.jobs import start_job
+
+log = start_job(snakemake)  # noqa: F821
+
+import math  # noqa: E402
+
+from randmedia.generate import sphere_surface as patterns  # noqa: E402
+from randmedia.io import write_dataset  # noqa: E402
+from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
+
+system = snakemake.wildcards.system  # noqa: F821
+p = dict(snakemake.params.patterns)  # noqa: F821
+seed = None
+if system == "icosahedral":
+    n = 40 * p["icosahedral_resolution"] * (p["icosahedral_resolution"] - 1) + 12
+    radius = math.sqrt(n / (4 * math.pi * p["density"]))
+    frames = [patterns.icosahedral_grid(p["icosahedral_resolution"], radius)]
+    attrs = {"pattern": "Tegmark icosahedral pixelization", "resolution": p["icosahedral_resolution"]}
+elif system == "fibonacci":
+    radius = math.sqrt(p["fibonacci_points"] / (4 * math.pi * p["density"]))
+    frames = [patterns.fibonacci_grid(p["fibonacci_points"], radius)]
+    attrs = {"pattern": "Swinbank-Purser Fibonacci grid"}
+else:
+    seed = sample_seed(snakemake.params.seed, "sphere2019", system, 0)  # noqa: F821
+    rng = sample_rng(seed)
+    radius = p["uncorrelated_R"]
+    if system == "uniform":
+        n = int(round(p["uncorrelated_points"]))
+        frames = [patterns.uniform_points(n, radius, rng) for _ in range(p["uncorrelated_configs"])]
+        attrs = {"pattern": "uniform (canonical)"}
+    else:
+        frames = [patterns.poisson_points(p["uncorrelated_points"], radius, rng,
+                                          n_theta=p["poisson_n_theta"], n_phi=p["poisson_n_phi"])
+                  for _ in range(p["uncorrelated_configs"])]
+        attrs = {"pattern": "Poisson (grand canonical)", "intensity_mean_points": p["uncorrelated_points"]}
+attrs.update(kind="pattern", system=system,
+             ensemble="grand_canonical" if system == "poisson" else "canonical")
+log.info("%s: %d frame(s), mean %.1f points, R = %.4g", system, len(frames),
+         sum(len(f) for f in frames) / len(frames), radius)
+write_dataset(patterns.points_dataset(frames, radius, attrs), snakemake.output[0],  # noqa: F821
+              rule=snakemake.rule, seed=seed, config=p)  # noqa: F821
