@@ -18,9 +18,11 @@ JAMMED_TARGETS = [MRJ_PACKINGS_TABLE]
 
 
 rule mrj2016_jammed_packing:
-    """One strictly jammed packing (TJ SLP from an RSA start); checkpoints and resumes."""
+    """One strictly jammed packing (TJ SLP from an RSA start, optionally after a fast
+    soft-sphere compression); checkpoints and resumes."""
     input:
         package_sources("generate/jammed.py", "generate/packing_lp.py", "generate/rsa.py",
+                        "generate/soft_spheres.py",
                         "generate/__init__.py", "describe/jamming.py", "describe/bond_order.py",
                         "periodic.py", "seeding.py"),
     output:
@@ -29,6 +31,7 @@ rule mrj2016_jammed_packing:
         system="mrj|mrj_large",
     params:
         n_particles=lambda wildcards: MRJ_JAMMED[wildcards.system]["n_particles"],
+        precompress_phi=lambda wildcards: MRJ_JAMMED[wildcards.system]["precompress_phi"],
         initial_phi=MRJ_JAMMED["initial_phi"],
         tj=MRJ_JAMMED["tj"],
         contacts=MRJ_JAMMED["contacts"],

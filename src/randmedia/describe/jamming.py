@@ -236,7 +236,7 @@ def _smallest_eigenvalue_ratio(matrix, iterations: int = 30) -> float:
 
 
 def analyse(positions, box, diameter: float = 1.0, *, gap_tolerance: float = 1e-9,
-            rank_tolerance: float = 1e-10, force_tolerance: float = 1e-7,
+            rank_tolerance: float = 1e-12, force_tolerance: float = 1e-7,
             motion_tolerance: float = 1e-6, load_test: bool = False, n_loads: int = 2,
             seed: int = 0) -> JammingAnalysis:
     """Contacts, rattlers and the strict-jamming test (module docstring).
@@ -274,7 +274,9 @@ def analyse(positions, box, diameter: float = 1.0, *, gap_tolerance: float = 1e-
     trace_cost = np.zeros(cone.shape[1])
     trace_cost[:dim] = 1.0
     trace = packing_lp.solve(trace_cost, cone, lower_rows, -upper, upper, backend="highs-ipx")
-    forces[on_backbone] = trace.row_dual[:-1]
+    # duals: A^T y = (1 + y_volume) grad Tr eps, so the forces per unit pressure are
+    # y / (1 + y_volume) (then sum_k f_k rho_k n_k n_k^T = I)
+    forces[on_backbone] = trace.row_dual[:-1] / (1.0 + trace.row_dual[-1])
     backbone_forces = forces[on_backbone]
     positive = backbone_forces.size > 0 and bool(
         (backbone_forces > force_tolerance * backbone_forces.mean()).all())
@@ -299,16 +301,17 @@ def analyse(positions, box, diameter: float = 1.0, *, gap_tolerance: float = 1e-
 #: attributes of a packing file that the summary table reports
 PACKING_ATTRS = ("system", "sample", "n_particles", "phi", "z_mean_nonrattlers", "rattler_fraction",
                  "n_contacts", "n_backbone_contacts", "isostatic_excess", "jammed", "Q6",
-                 "crystal_fraction", "min_gap", "min_noncontact_gap", "n_lp", "seconds")
+                 "crystal_fraction", "min_gap", "min_noncontact_gap", "n_lp")
 
 #: columns averaged per system (mean and SEM over packings)
 SUMMARY_COLUMNS = ("phi", "z_mean_nonrattlers", "rattler_fraction", "isostatic_excess", "jammed",
-                   "Q6", "crystal_fraction", "n_lp", "seconds")
+                   "Q6", "crystal_fraction", "n_lp")
 
 
 def summary_table(records):
     """One row per packing, then per system a ``mean`` and a ``sem`` row (SEM over packings,
-    :func:`randmedia.stats.standard_error`; NaN for a single packing)."""
+    :func:`randmedia.stats.standard_error`; NaN for a single packing). Wall-clock times stay
+    in the packing files (attr ``seconds``): the table is identical for identical packings."""
     import pandas as pd
 
     from randmedia.stats import standard_error
