@@ -120,7 +120,8 @@ class JammedPacking:
     box: np.ndarray
     diameter: float
     n_lp: int
-    seconds: float
+    seconds: float      # wall time
+    cpu_seconds: float  # CPU time of this process (steadier on a shared machine)
     lp_seconds: float
     history: dict = field(default_factory=dict)  # per LP: phi, trace, rescale, rows, seconds
     params: TJParameters = TJParameters()
@@ -250,14 +251,15 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     new_box = reduce_cell(new_box)
     moved = Cell(new_box).wrap(moved)
     record = {"trace": float(solution.x[:dim].sum()), "rescale": factor, "rows": len(i),
-              "seconds": solution.seconds, "iterations": solution.iterations}
+              "seconds": solution.seconds, "cpu": solution.cpu_seconds,
+              "iterations": solution.iterations}
     return moved, new_box, record
 
 
 # --------------------------------------------------------------------------- the construction
 
 
-_HISTORY_KEYS = ("phi", "trace", "rescale", "rows", "seconds", "iterations")
+_HISTORY_KEYS = ("phi", "trace", "rescale", "rows", "seconds", "cpu", "iterations")
 
 
 def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParameters(), *,
@@ -283,14 +285,15 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
                          f"{diameter:g}")
     key = _checkpoint_key(positions, box, params, diameter)
     history = {name: [] for name in _HISTORY_KEYS}
-    elapsed_before = 0.0
+    elapsed_before = cpu_before = 0.0
     state = _load_checkpoint(checkpoint, key, log) if checkpoint is not None else None
     if state is not None:  # saved at an LP boundary, exactly as the step left it
-        positions, box, history, elapsed_before = state
+        positions, box, history, elapsed_before, cpu_before = state
     else:
         box = reduce_cell(box)
         positions = Cell(box).wrap(positions)
     started = last_save = last_log = time.perf_counter()
+    cpu_started = time.process_time()
     window_start = (len(history["phi"]), started)
     while True:
         phis = history["phi"]
@@ -311,15 +314,17 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
             window_start, last_log = (len(history["phi"]), now), now
         if checkpoint is not None and now - last_save >= checkpoint_seconds:
             _save_checkpoint(checkpoint, key, positions, box, history,
-                             elapsed_before + now - started)
+                             elapsed_before + now - started,
+                             cpu_before + time.process_time() - cpu_started)
             last_save = now
     seconds = elapsed_before + time.perf_counter() - started
-    log.info("converged after %d LPs in %.1f s: phi = %.6f", len(history["phi"]), seconds,
-             history["phi"][-1])
+    cpu_seconds = cpu_before + time.process_time() - cpu_started
+    log.info("converged after %d LPs in %.1f s (%.1f s CPU): phi = %.6f", len(history["phi"]),
+             seconds, cpu_seconds, history["phi"][-1])
     if checkpoint is not None:
         Path(checkpoint).unlink(missing_ok=True)
     return JammedPacking(positions=positions, box=box, diameter=diameter, n_lp=len(history["phi"]),
-                         seconds=seconds, lp_seconds=float(np.sum(history["seconds"])),
+                         seconds=seconds, cpu_seconds=cpu_seconds, lp_seconds=float(np.sum(history["seconds"])),
                          history={k: np.asarray(v) for k, v in history.items()}, params=params)
 
 
@@ -335,9 +340,9 @@ def _log_progress(log, history, window_start, now, dim) -> None:
     target = 0.64 if dim == 3 else 0.84
     remaining = 50 + (max(target - phi, 0.0) / growth if growth > 0 else 0.0)
     log.info("LP %d: phi = %.6f, Tr eps = %.3g, rescale - 1 = %.2g, %d rows, %.2f LPs/s "
-             "(%.2f s per LP solve), ETA ~ %.0f s", done, phi, history["trace"][-1],
+             "(last LP solve %.2f s, %.2f s CPU), ETA ~ %.0f s", done, phi, history["trace"][-1],
              history["rescale"][-1] - 1, history["rows"][-1], rate, history["seconds"][-1],
-             remaining / max(rate, 1e-9))
+             history["cpu"][-1], remaining / max(rate, 1e-9))
 
 
 # --------------------------------------------------------------------------- checkpoints
@@ -353,10 +358,10 @@ def _checkpoint_key(positions, box, params, diameter) -> str:
     return hashlib.sha256(payload.encode()).hexdigest()
 
 
-def _save_checkpoint(path, key, positions, box, history, elapsed) -> None:
+def _save_checkpoint(path, key, positions, box, history, elapsed, cpu) -> None:
     with atomic_output(path) as tmp:
         with open(tmp, "wb") as handle:
-            np.savez(handle, key=key, positions=positions, box=box, elapsed=elapsed,
+            np.savez(handle, key=key, positions=positions, box=box, elapsed=elapsed, cpu=cpu,
                      **{f"history_{k}": np.asarray(v) for k, v in history.items()})
 
 
@@ -370,7 +375,8 @@ def _load_checkpoint(path, key, log):
                 log.warning("%s belongs to another construction; starting afresh", path)
                 return None
             history = {k: data[f"history_{k}"].tolist() for k in _HISTORY_KEYS}
-            state = (data["positions"].copy(), data["box"].copy(), history, float(data["elapsed"]))
+            state = (data["positions"].copy(), data["box"].copy(), history, float(data["elapsed"]),
+                     float(data["cpu"]))
     except (OSError, ValueError, KeyError) as exc:
         log.warning("%s is unreadable (%s); starting afresh", path, exc)
         return None
@@ -404,6 +410,7 @@ def packing_dataset(packing: JammedPacking, analysis, attrs: dict):
         "phi": packing.phi,
         "n_lp": packing.n_lp,
         "seconds": packing.seconds,
+        "cpu_seconds": packing.cpu_seconds,
         "lp_seconds": packing.lp_seconds,
         "n_contacts": len(network.i),
         "n_backbone_contacts": analysis.n_backbone_contacts,

@@ -28,8 +28,8 @@ if precompress_phi is not None:
              start.shape[0] * 3.141592653589793 / 6 / abs(box[0, 0] * box[1, 1] * box[2, 2]))
 packing = jam(start, box, TJParameters(**params["tj"]),
               checkpoint=output.with_name(f".{output.stem}.checkpoint.npz"),
-              checkpoint_seconds=params["checkpoint_seconds"], log=log,
-              threads=snakemake.threads)  # noqa: F821
+              checkpoint_seconds=params["checkpoint_seconds"], log=log)  # one HiGHS thread:
+# the LP solutions, hence the packings, are then the same whatever the core count
 analysis = jamming.analyse(packing.positions, packing.box, packing.diameter, **params["contacts"])
 cutoff = params["bond_order_cutoff"] * packing.diameter
 q6 = bond_order.global_q6(packing.positions, packing.box, cutoff, diameter=packing.diameter)
