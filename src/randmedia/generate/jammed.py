@@ -38,7 +38,8 @@ Convergence. The packing is converged when the packing fraction grew by less
 than ``tolerance`` (relative) over the last two LPs (TJ's criterion on the cell
 volume). Near jamming the LP solves the linearized problem of the contact
 network exactly, so the SLP converges quadratically: contacts close to
-~1e-14 D while the smallest non-contact gaps stay ~1e-6 D or larger.
+1e-14 - 1e-10 D (the last rescaling leaves them all at about its size) while the
+smallest non-contact gaps stay ~1e-6 D or larger.
 
 Start: random sequential addition at ``initial_phi``
 (:func:`randmedia.generate.rsa.random_sequential_addition`). The construction is
