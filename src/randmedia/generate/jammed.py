@@ -34,9 +34,21 @@ Every overlap after a step therefore comes from the linearization alone
 (second order in the step), and the full overlap check of step 4 covers all
 pairs anyway.
 
-Convergence. The packing is converged when the packing fraction grew by less
-than ``tolerance`` (relative) over the last two LPs (TJ's criterion on the cell
-volume). Near jamming the LP solves the linearized problem of the contact
+Trust region. Near jamming a full-size step can lose more to the rescaling of
+step 4 than the LP gained (the linearization error is second order in the
+step), and phi then oscillates. Each step is therefore judged by the ratio of
+the realized gain ln(phi_new / phi_old) to the LP's prediction -Tr epsilon: a
+step that lowers phi is rejected, and the translation and strain bounds are
+multiplied by a trust factor that is halved after a rejected step or a ratio
+below 1/4 and doubled (up to 1) after a ratio above 3/4 (:func:`_next_trust`).
+
+Convergence. The packing is converged when an LP with the full bounds cannot
+lower the volume by more than ``tolerance`` (relative, -Tr epsilon <= tolerance;
+that last step is not applied), when the packing fraction grew by less than
+``tolerance`` over the last two accepted LPs (TJ's criterion on the cell
+volume), or when the trust factor fell below ``MIN_TRUST`` = 1e-3 (no step
+raises phi any more; smaller bounds make HiGHS fail numerically). Changes of phi below ``tolerance`` count as round-off:
+such a step is accepted, not rejected. Near jamming the LP solves the linearized problem of the contact
 network exactly, so the SLP converges quadratically: contacts close to
 1e-14 - 1e-10 D (the last rescaling leaves them all at about its size) while the
 smallest non-contact gaps stay ~1e-6 D or larger.
@@ -220,8 +232,9 @@ def remove_overlaps(positions: np.ndarray, box: np.ndarray, diameter: float):
 
 
 def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diameter: float = 1.0,
-            threads: int = 1):
-    """One LP of the TJ construction (steps 1-4 of the module docstring).
+            threads: int = 1, trust: float = 1.0):
+    """One LP of the TJ construction (steps 1-4 of the module docstring), with the
+    translation and strain bounds multiplied by ``trust`` (<= 1).
 
     Returns (positions, box, record) with record = dict(trace, rescale, rows, seconds,
     iterations).
@@ -239,12 +252,22 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     cost = np.zeros(ns + dim * n)
     cost[:dim] = 1.0
     delta = params.translation_bound(dim, diameter)
-    upper = np.full(ns + dim * n, delta)
-    upper[:dim] = params.max_normal_strain
-    upper[dim:ns] = params.max_shear_strain
+    upper = np.full(ns + dim * n, delta * trust)
+    upper[:dim] = params.max_normal_strain * trust
+    upper[dim:ns] = params.max_shear_strain * trust
     upper[ns:ns + dim] = 0.0  # sphere 0 fixed: removes the free global translation
-    solution = packing_lp.solve(cost, matrix, packing_lp.gap_bound(distance, diameter), -upper,
-                                upper, backend=params.backend, threads=threads)
+    bound = packing_lp.gap_bound(distance, diameter)
+    if bound.max(initial=0.0) > 1e-12 * diameter:
+        raise ConstructionError(f"overlap of {bound.max():.3g} D before an LP (bug)")
+    bound = np.minimum(bound, 0.0)  # round-off overlaps (< 1e-12 D) count as contacts
+    try:
+        solution = packing_lp.solve(cost, matrix, bound, -upper, upper, backend=params.backend,
+                                    threads=threads)
+    except packing_lp.LPError:
+        # x = 0 is feasible, so this is a numerical failure of the solver (seen with IPX at
+        # tiny trust factors): the dual simplex decides
+        solution = packing_lp.solve(cost, matrix, bound, -upper, upper, backend="highs-simplex",
+                                    threads=threads)
     deformation = np.eye(dim) + packing_lp.strain_matrix(solution.x[:ns], dim)
     moved = (positions + solution.x[ns:].reshape(n, dim)) @ deformation.T
     new_box = deformation @ box
@@ -260,7 +283,33 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
 # --------------------------------------------------------------------------- the construction
 
 
-_HISTORY_KEYS = ("phi", "trace", "rescale", "rows", "seconds", "cpu", "iterations")
+_HISTORY_KEYS = ("phi", "trace", "rescale", "rows", "seconds", "cpu", "iterations", "trust",
+                 "accepted")
+#: the construction stops when the trust factor falls below this (no step improves phi)
+MIN_TRUST = 1e-3
+
+
+def _next_trust(trust: float, predicted: float, actual: float,
+                noise: float = 0.0) -> tuple[bool, float]:
+    """Trust-region rule of the SLP: (accept the step?, trust factor of the next LP).
+
+    ``predicted`` = -Tr epsilon, the LP's first-order relative volume decrease;
+    ``actual`` = ln(phi_new / phi_old) after the overlaps were removed. A step that lowers
+    phi by more than ``noise`` (the convergence tolerance: changes below it are round-off)
+    is rejected and the bounds halved; an accepted step that realizes less than a quarter
+    of its prediction halves them, more than three quarters doubles them (up to the
+    configured bounds).
+    """
+    if actual < -noise:
+        return False, trust / 2
+    if predicted <= noise:
+        return True, trust
+    ratio = actual / predicted
+    if ratio < 0.25:
+        return True, trust / 2
+    if ratio > 0.75:
+        return True, min(1.0, 2 * trust)
+    return True, trust
 
 
 def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParameters(), *,
@@ -285,7 +334,7 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         raise ValueError(f"the start packing overlaps: closest centre distance {closest:.6g} < D = "
                          f"{diameter:g}")
     key = _checkpoint_key(positions, box, params, diameter)
-    history = {name: [] for name in _HISTORY_KEYS}
+    history = {name: [] for name in _HISTORY_KEYS + ("trust_next",)}
     elapsed_before = cpu_before = 0.0
     state = _load_checkpoint(checkpoint, key, log) if checkpoint is not None else None
     if state is not None:  # saved at an LP boundary, exactly as the step left it
@@ -296,18 +345,39 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     started = last_save = last_log = time.perf_counter()
     cpu_started = time.process_time()
     window_start = (len(history["phi"]), started)
+    trust = history["trust_next"][-1] if history["trust_next"] else 1.0
     while True:
-        phis = history["phi"]
-        if len(phis) >= 3 and (phis[-1] - phis[-3]) <= params.tolerance * phis[-1]:
+        accepted = [phi for phi, ok in zip(history["phi"], history["accepted"]) if ok]
+        if len(accepted) >= 3 and abs(accepted[-1] - accepted[-3]) <= params.tolerance * accepted[-1]:
             break
-        if len(phis) >= params.max_lps:
+        if trust < MIN_TRUST:
+            log.info("trust factor below %g: no LP step raises phi any more", MIN_TRUST)
+            break
+        if len(history["phi"]) >= params.max_lps:
+            change = (accepted[-1] - accepted[-3]) / accepted[-1] if len(accepted) >= 3 else np.nan
             raise ConstructionError(
-                f"TJ did not converge within max_lps = {params.max_lps} LPs (phi = {phis[-1]:.6f}, "
-                f"last relative change {(phis[-1] - phis[-3]) / phis[-1]:.3g} > tolerance "
-                f"{params.tolerance:g})")
-        positions, box, record = tj_step(positions, box, params, diameter, threads)
-        record["phi"] = packing_fraction(positions, box, diameter)
-        for name in _HISTORY_KEYS:
+                f"TJ did not converge within max_lps = {params.max_lps} LPs (phi = "
+                f"{packing_fraction(positions, box, diameter):.6f}, last relative change "
+                f"{change:.3g} > tolerance {params.tolerance:g})")
+        phi_old = packing_fraction(positions, box, diameter)
+        new_positions, new_box, record = tj_step(positions, box, params, diameter, threads, trust)
+        phi_new = packing_fraction(new_positions, new_box, diameter)
+        if -record["trace"] <= params.tolerance and trust == 1.0:
+            # the LP with the full bounds cannot lower the volume: jammed (TJ's criterion)
+            for name in _HISTORY_KEYS + ("trust_next",):
+                history[name].append({**record, "phi": phi_old, "trust": trust, "accepted": 1,
+                                      "trust_next": trust}[name])
+            log.info("the LP cannot lower the volume (Tr epsilon = %.3g): jammed",
+                     record["trace"])
+            break
+        ok, next_trust = _next_trust(trust, -record["trace"], math.log(phi_new / phi_old),
+                                     params.tolerance)
+        if ok:
+            positions, box = new_positions, new_box
+        record.update(phi=phi_new if ok else phi_old, trust=trust, accepted=int(ok),
+                      trust_next=next_trust)
+        trust = next_trust
+        for name in _HISTORY_KEYS + ("trust_next",):
             history[name].append(record[name])
         now = time.perf_counter()
         if now - last_log >= log_seconds:
@@ -375,7 +445,7 @@ def _load_checkpoint(path, key, log):
             if str(data["key"]) != key:
                 log.warning("%s belongs to another construction; starting afresh", path)
                 return None
-            history = {k: data[f"history_{k}"].tolist() for k in _HISTORY_KEYS}
+            history = {k: data[f"history_{k}"].tolist() for k in _HISTORY_KEYS + ("trust_next",)}
             state = (data["positions"].copy(), data["box"].copy(), history, float(data["elapsed"]),
                      float(data["cpu"]))
     except (OSError, ValueError, KeyError) as exc:
