@@ -131,3 +131,21 @@ def bad_config(mutation) -> dict:
     config = copy.deepcopy(quick_config())
     mutation(config)
     return config
+
+MRJ = ("mrj2016", "mrj")
+BAD_CONFIGS += [
+    ("mrj_n_particles_small", _set(MRJ + ("mrj", "n_particles"), 20), "mrj2016.mrj.mrj.n_particles"),
+    ("mrj_n_particles_cell", lambda c: (c["mrj2016"]["mrj"]["mrj_large"].update(n_particles=60),
+                                        c["mrj2016"]["mrj"]["tj"].update(influence_gap=0.6)),
+     "mrj2016.mrj.mrj_large.n_particles"),
+    ("mrj_n_samples_zero", _set(MRJ + ("mrj", "n_samples"), 0), "mrj2016.mrj.mrj.n_samples"),
+    ("mrj_initial_phi_high", _set(MRJ + ("initial_phi",), 0.5), "mrj2016.mrj.initial_phi"),
+    ("mrj_influence_gap_vs_strain", lambda c: c["mrj2016"]["mrj"]["tj"].update(
+        influence_gap=0.02, max_normal_strain=0.01, max_shear_strain=0.01),
+     "mrj2016.mrj.tj.influence_gap"),
+    ("mrj_backend_unknown", _set(MRJ + ("tj", "backend"), "glpk"), "mrj2016.mrj.tj.backend"),
+    ("mrj_tolerance_zero", _set(MRJ + ("tj", "tolerance"), 0.0), "mrj2016.mrj.tj.tolerance"),
+    ("mrj_gap_tolerance_big", _set(MRJ + ("contacts", "gap_tolerance"), 0.01),
+     "mrj2016.mrj.contacts.gap_tolerance"),
+    ("mrj_unknown_key", _set(MRJ + ("n_particles",), 2000), "mrj2016.mrj.n_particles"),
+]
