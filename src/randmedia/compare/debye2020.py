@@ -339,7 +339,7 @@ def surface_pore_rows(reference, fits: xr.Dataset, *, a: float, k_sigma: float) 
         key="phase-2 wrapping fraction crosses 1/2 (phase inversion used for phi2 > 1/2)",
         published=float(quoted["percolation_threshold_phi2"]),
         ours=float(fits.attrs["percolation_crossing"]),
-        ours_sem=float(fits.attrs["percolation_crossing_err"]), k_sigma=k_sigma,
+        ours_sem=float(np.nan_to_num(fits.attrs["percolation_crossing_err"])), k_sigma=k_sigma,
         systematic=float(fits.attrs["percolation_bracket"])
         if np.isfinite(fits.attrs["percolation_bracket"]) else 0.0))
     return rows

@@ -354,7 +354,7 @@ def overlapping_disks_level_set(surface: xr.Dataset, pores: xr.Dataset, *, radiu
     """Validation figure: F_sv, F_ss (Eqs. 35-36) and F(delta), P(delta) (Eq. 37) of digitized
     overlapping disks on tuned level sets, against the exact results; bottom row: deviations
     in units of the SEM with the +-3 band. F_ss is drawn from r = 1 px (the bins below are
-    smeared by the interface deposit), F and P while the exact F >= 1e-4."""
+    smeared by the interface deposit), F and P while the exact F >= 1e-3."""
     from randmedia.theory.overlapping import (pore_size_complementary_cdf, pore_size_density,
                                               surface_surface, surface_void)
 
@@ -362,7 +362,7 @@ def overlapping_disks_level_set(surface: xr.Dataset, pores: xr.Dataset, *, radiu
                        gridspec_kw={"height_ratios": [2, 1], "wspace": 0.5, "hspace": 0.08})
     r = surface["r"].values
     delta, centres = pores["delta"].values, pores["delta_bin"].values
-    reach = delta[pore_size_complementary_cdf(delta, radius, phi2) >= 1e-4].max()
+    reach = delta[pore_size_complementary_cdf(delta, radius, phi2) >= 1e-3].max()
     panels = [
         ("F_sv", surface, r, r >= 0.5, lambda x: surface_void(x, radius, phi2), r"$R\,F_{sv}$", radius),
         ("F_ss", surface, r, r >= 1.0, lambda x: surface_surface(x, radius, phi2), r"$R^2 F_{ss}$",
@@ -381,10 +381,11 @@ def overlapping_disks_level_set(surface: xr.Dataset, pores: xr.Dataset, *, radiu
         with np.errstate(divide="ignore", invalid="ignore"):
             top.plot(fine / radius, scale * exact(fine), "k-", lw=0.7, label="exact")
             deviation = (mean - exact(x)) / sem
-        if name != "F_sv":
+        if name in ("F", "P"):
             _plain_log_axis(top)
+            top.set_ylim(3e-4 * scale * np.nanmax(mean[keep]), 2 * scale * np.nanmax(mean[keep]))
         if name == "F_ss":
-            top.set_ylim(0.5 * scale * mean[keep].min(), 3 * scale * mean[keep][-1])
+            top.set_ylim(0, 4 * scale * mean[keep][-1])
         top.set_ylabel(ylabel)
         bottom.axhspan(-3, 3, color="0.9")
         bottom.plot(x[keep] / radius, deviation[keep], "o", ms=1.2, mfc="none", color="C0")
