@@ -345,7 +345,8 @@ rule debye2020_numbers:
         surface_pore_fits=SURFACE_PORE_FITS,
         models_surface=[level_set_files(name)["surface"] for name in comparison_models()],
         models_pores=[level_set_files(name)["pores"] for name in comparison_models()],
-        code=package_sources("compare/debye2020.py"),
+        code=package_sources("compare/debye2020.py", "theory/overlapping.py",
+                             *(["theory/scaled_particle.py"] if HARD_DISKS_READY else [])),
     output:
         "results/debye2020/tables/numbers.csv",
     log:

@@ -423,4 +423,16 @@ def level_set_numbers(system: str, surface: xr.Dataset, pores: xr.Dataset) -> "p
     values = surface["euler_samples"].values
     rows.append(_number(f"{system}: euler_topological", phi2, values.mean(), standard_error(values),
                         "1/pixel^2", "bit-quad Euler characteristic of phase 2 of the level set"))
+    radius = float(surface.attrs["length_scale"])
+    model = surface.attrs["model"]
+    if model == "overlapping_disks":
+        theory, where = pore_size_moment(1, radius, phi2, dim=2), "exact, Eq. (18) of Eq. (37)"
+    elif model == "hard_disks":
+        from randmedia.theory.scaled_particle import pore_size_moments
+
+        theory = pore_size_moments(phi2, 2, diameter=2 * radius)[0]
+        where = "scaled-particle theory, Eq. (41) (approximate)"
+    else:
+        theory, where = np.nan, ""
+    rows.append(_number(f"{system}: mean_delta_theory", phi2, theory, unit="pixel", where=where))
     return pd.DataFrame(rows)

@@ -303,7 +303,7 @@ def fig09_two_point(models: dict, *, pdf_path) -> None:
         ax.set_xlabel(r"$r s$")
         ax.set_xlim(0, 6)
         ax.set_title(f"({label})")
-    axes[0].legend(loc="upper right", fontsize=7,
+    axes[2].legend(loc="upper right", fontsize=6,
                    title="lines: exact / formula / simulation\npoints: level-set images",
                    title_fontsize=6)
     save_figure(fig, pdf_path)
@@ -403,7 +403,7 @@ def _hard_disk_pore_density(radius: float, phi2: float):
     """P(delta) of Eq. (41) (scaled-particle theory, randmedia.theory.scaled_particle)."""
     from randmedia.theory import scaled_particle
 
-    return lambda delta: scaled_particle.pore_size_density(delta, radius, phi2, dim=2)
+    return lambda delta: scaled_particle.eq41_pore_size_density(delta, phi2, radius)
 
 
 def section6_figure(number: int, *, a: float, media_surface=None, media_pores=None,

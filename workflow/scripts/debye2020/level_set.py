@@ -17,8 +17,9 @@ params = dict(snakemake.params.items())  # noqa: F821
 datasets = [read_dataset(path, PHASE_IMAGE) for path in snakemake.input.samples]  # noqa: F821
 images = np.stack([ds["phase"].values for ds in datasets])
 target = dict(params["target"])
-if target["model"] == "hard_disks":  # radius and phi2 in pixels come with the images
-    target.update(radius=float(datasets[0].attrs["radius"]), phi2=float(datasets[0].attrs["phi2"]))
+if target["model"] == "hard_disks":  # radius (pixels) and the disks' exact phi2 come with the images
+    attrs = datasets[0].attrs
+    target.update(radius=float(attrs["radius"]), phi2=float(attrs.get("phi2_disks", attrs["phi2"])))
 length = target["a"] if target["model"] == "debye" else target["radius"]
 s_target = model_specific_surface(**target)
 iface = params["interface"]

@@ -22,6 +22,7 @@ for path in inputs.s2:
 tables = [construction_numbers(s2), lineal_numbers(read_dataset(inputs.fits)),
           surface_pore_numbers(read_dataset(inputs.surface_pore_fits, attrs=["a"]))]
 for surface_path, pores_path in zip(inputs.models_surface, inputs.models_pores):
-    surface = read_dataset(surface_path, SURFACE, attrs=["system", "phi2", "sigma", "s_exact"])
+    surface = read_dataset(surface_path, SURFACE,
+                           attrs=["system", "model", "phi2", "sigma", "s_exact", "length_scale"])
     tables.append(level_set_numbers(surface.attrs["system"], surface, read_dataset(pores_path, PORES)))
 write_csv(pd.concat(tables, ignore_index=True), snakemake.output[0])  # noqa: F821
