@@ -183,7 +183,8 @@ def overlapping_disks_surface_rows(surface: xr.Dataset, *, radius: float, phi2: 
                 return 0.25 * f(np.abs(x - h)) + 0.5 * f(x) + 0.25 * f(x + h)
 
         reference = binning.average_of(in_pixels)
-        margin = np.abs(binning.average_of(smeared) - reference)
+        with np.errstate(invalid="ignore"):
+            margin = np.abs(binning.average_of(smeared) - reference)
         for i, r in enumerate(surface["r"].values):
             if r < r_min or r > compare_r_max or not np.isfinite(reference[i]):
                 continue
