@@ -37,7 +37,7 @@ def test_r2_over_r_inverts_eq_30_for_monodisperse_disks():
 
 # --------------------------------------------------------------------------- Sec. V A-B fits
 
-from randmedia.fit.debye2020 import (eq27_normalization, formula_deviation, intercept_at_zero,  # noqa: E402
+from randmedia.fit.debye2020 import (eq27_normalization, formula_deviation,  # noqa: E402
                                      logistic_slope, p1_polynomial, pore_size_fit, wrapping_crossing)
 from randmedia.theory import debye_formulas as formulas  # noqa: E402
 
@@ -116,9 +116,7 @@ def test_mean_pore_size_is_eq_28_and_the_integral_of_F():
         assert formulas.mean_pore_size(p1, p2) == pytest.approx(integral, rel=1e-9)
 
 
-def test_intercept_and_wrapping_crossing():
-    x = np.arange(0.125, 3.0, 0.25)
-    assert intercept_at_zero(x, 2.0 - 0.5 * x, x_max=1.0) == pytest.approx(2.0)
+def test_wrapping_crossing():
     crossing, err, bracket = wrapping_crossing([0.1, 0.3, 0.5], [0.0, 0.0, 0.8], [1.0, 1.0, 0.6], 10)
     # combined curve: 0.1 -> 0, 0.3 -> 0, 0.5 -> 0.7, 0.7 -> 1, 0.9 -> 1: crosses between 0.3 and 0.5
     assert crossing == pytest.approx(0.3 + 0.5 / 0.7 * 0.2) and err > 0 and bracket == pytest.approx(0.2)

@@ -311,9 +311,10 @@ def surface_pore_rows(reference, fits: xr.Dataset, *, a: float, k_sigma: float) 
             ours_sem=float(np.sqrt(covariance[k, k])), k_sigma=k_sigma))
     for i, phi2 in enumerate(fits["phi2"].values):
         formula = np.pi * phi2 / a
-        rows.append(compare(quantity="p0", key=f"phi2={phi2:g}: P(0) = s/phi1 (units 1/a)",
+        rows.append(compare(quantity="p0", key=f"phi2={phi2:g}: P(0) = s/phi1, first bin (units 1/a)",
                             published=formula * a, ours=float(fits["p0_measured"].values[i] * a),
-                            ours_sem=float(fits["p0_measured_sem"].values[i] * a), k_sigma=k_sigma))
+                            ours_sem=float(fits["p0_measured_sem"].values[i] * a), k_sigma=k_sigma,
+                            systematic=float(fits["p0_bin_margin"].values[i] * a)))
         rows.append(compare(quantity="p2", key=f"phi2={phi2:g}: free p2 of Eq. (27) (units 1/a)",
                             published=formula * a, ours=float(fits["p2_free"].values[i] * a),
                             ours_sem=float(fits["p2_free_sem"].values[i] * a), k_sigma=k_sigma))
@@ -374,7 +375,8 @@ def surface_pore_numbers(fits: xr.Dataset) -> "pd.DataFrame":
         ("p1", "p1_sem", "1/pixel^2", "Eq. (27), p0 = p2 = pi phi2 / a"),
         ("p1_chi2_per_dof", None, "1", "Eq. (27) fitted to the mean P (SEM-weighted)"),
         ("p2_free", "p2_free_sem", "1/pixel", "Eq. (27) with p2 free (paper: pi phi2 / a)"),
-        ("p0_measured", "p0_measured_sem", "1/pixel", "P(0) (paper: s/phi1 = pi phi2 / a)"),
+        ("p0_measured", "p0_measured_sem", "1/pixel", "P(0), first bin (paper: s/phi1 = pi phi2 / a)"),
+        ("p0_bin_margin", None, "1/pixel", "shift of Eq. (27) over half a bin (stated margin)"),
         ("p0_formula", None, "1/pixel", "pi phi2 / a"),
         ("eq27_normalization", None, "1", "integral of Eq. (27), p0 = p2"),
         ("mean_delta", "mean_delta_sem", "pixel", "simulated <delta> (level-set distances)"),

@@ -151,15 +151,6 @@ def p1_polynomial(phi2, p1, p1_err, a: float) -> dict:
             "dof": dof}
 
 
-def intercept_at_zero(x, y, *, x_max: float) -> float:
-    """Value at x = 0 of the least-squares line through the points with x <= x_max."""
-    x, y = np.asarray(x, dtype=float), np.asarray(y, dtype=float)
-    keep = x <= x_max
-    if keep.sum() < 2:
-        raise ValueError(f"fewer than 2 points with x <= {x_max}")
-    return float(np.polynomial.polynomial.polyfit(x[keep], y[keep], 1)[0])
-
-
 def eq27_normalization(p0: float, p1: float, p2: float) -> float:
     """integral_0^inf of Eq. (27) by quadrature (1 exactly when p0 = p2, for any p1 > 0)."""
     from scipy.integrate import quad
@@ -262,14 +253,18 @@ def surface_pore_fits(systems: dict, *, a: float, fits: dict) -> "xr.Dataset":
                                     sem=pores["P_sem"].values, delta_max=delta_max)
         p1 = np.array(per_sample)
         p2_free = np.array([f[1] for f in free])
-        p0_measured = np.array([intercept_at_zero(centres, P, x_max=1.0)
-                                for P in pores["P_samples"].values])
+        # P(0): the first bin, [0, w]; it averages P over w, so the margin is what Eq. (27) with
+        # the fitted p1 changes over half a bin (the next bins carry the level set's rounded
+        # pixel steps, a few % at delta ~ 0.3-0.5 px, and would bias an extrapolation)
+        p0_measured = pores["P_samples"].values[:, 0]
+        width = float(pores["delta"].values[1] - pores["delta"].values[0])
         mean_delta = pores["mean_delta_samples"].values
         row.update(p0_formula=p0, p1=p1.mean(), p1_sem=standard_error(p1),
                    p1_chi2_per_dof=mean_fit.chi2_per_dof, pore_fit_delta_max=delta_max,
                    p2_free=p2_free.mean(), p2_free_sem=standard_error(p2_free),
                    p1_with_p2_free=np.mean([f[0].value for f in free]),
                    p0_measured=p0_measured.mean(), p0_measured_sem=standard_error(p0_measured),
+                   p0_bin_margin=abs(float(debye.pore_size_density(0.5 * width, p0, p1.mean(), p0)) - p0),
                    eq27_normalization=eq27_normalization(p0, p1.mean(), p0),
                    mean_delta=mean_delta.mean(), mean_delta_sem=standard_error(mean_delta),
                    mean_delta_eq28=debye.debye_mean_pore_size(phi2, a))
@@ -348,7 +343,8 @@ _SURFACE_PORE_UNITS = {
     "p2_free": ("1/pixel", "p2 of Eq. (27) fitted with p1 (p0 fixed), mean of per-sample fits"),
     "p2_free_sem": ("1/pixel", "standard error of the free p2"),
     "p1_with_p2_free": ("1/pixel^2", "p1 of the fit with p2 free"),
-    "p0_measured": ("1/pixel", "P(0) from a line through the P bins with delta <= 1 px"),
+    "p0_measured": ("1/pixel", "P(0): the first P bin, 0 <= delta <= bin width"),
+    "p0_bin_margin": ("1/pixel", "|Eq. (27)(half a bin) - p0|: what averaging over the first bin shifts"),
     "p0_measured_sem": ("1/pixel", "standard error of P(0)"),
     "eq27_normalization": ("1", "integral of Eq. (27) with p0 = p2 = pi phi2/a and the fitted p1"),
     "mean_delta": ("pixel", "mean pore size <delta> of the level sets, sample mean"),

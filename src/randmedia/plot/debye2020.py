@@ -159,7 +159,9 @@ def fig03_surface_void(surface_by_phi2: dict, *, a: float, pdf_path) -> None:
     fig, axes = _panels(len(surface_by_phi2))
     for label, ax, (phi2, ds) in zip("abcdefghij", axes, sorted(surface_by_phi2.items())):
         r = ds["r"].values
-        _band(ax, r / a, a * ds["F_sv"].values, a * ds["F_sv_sem"].values, "C0", "simulation")
+        keep = r >= 0.5  # the r = 0 bin is the interface deposit's own overlap with the void
+        _band(ax, r[keep] / a, a * ds["F_sv"].values[keep], a * ds["F_sv_sem"].values[keep], "C0",
+              "simulation")
         fine = np.linspace(0, r.max(), 300)
         ax.plot(fine / a, a * debye_surface_void(fine, phi2, a), "k--", lw=0.9, label="Eq. (24)")
         ax.set_xlabel(r"$r/a$")
