@@ -107,11 +107,22 @@ def overlapping_disks_chord_rows(chords: xr.Dataset, *, radius: float, phi2: flo
 
 
 def lineal_size_rows(fits: xr.Dataset, reference, *, k_sigma: float) -> list[dict]:
-    """<R^2>/<R> of Eq. (30), averaged over phi2, against the quoted (0.94 +- 0.04) a."""
+    """<R^2>/<R> of Eq. (30), averaged over phi2, against the quoted (0.94 +- 0.04) a; and the
+    spread 0.04 against the standard deviation of <R^2>/<R> over the phi2 values (ddof = 1),
+    whose own standard error, std / sqrt(2 (n - 1)) for n values, is the row's SEM."""
     quoted = reference.set_index("quantity")["value"]
     ratio = fits["R2_over_R"].values
     error = fits["R2_over_R_err"].values
+    spread = float(np.std(ratio, ddof=1)) if ratio.size > 1 else float("nan")
+    spread_sem = spread / np.sqrt(2 * (ratio.size - 1)) if ratio.size > 1 else 0.0
     return [compare(
+        quantity="R2_over_R_spread",
+        key="standard deviation over phi2, units of a",
+        published=float(quoted["R2_over_R_spread"]),
+        ours=spread,
+        ours_sem=float(spread_sem),
+        k_sigma=k_sigma,
+    ), compare(
         quantity="R2_over_R_mean",
         key="mean over phi2, units of a",
         published=float(quoted["R2_over_R_mean"]),
