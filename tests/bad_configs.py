@@ -35,6 +35,8 @@ def _delete(path):
 
 DISKS = ("debye2020", "overlapping_disks")
 MEDIA = ("debye2020", "media")
+INTERFACE = ("debye2020", "interface")
+FITS = ("debye2020", "fits")
 
 #: (case id, mutation, text the error message must contain)
 BAD_CONFIGS = [
@@ -68,6 +70,16 @@ BAD_CONFIGS = [
     ("media_schedule_unknown", _set(MEDIA + ("schedule", "cooling"), 0.9),
      "debye2020.media.schedule.cooling"),
     ("media_L_list", _set(MEDIA + ("L",), [121, 131]), "debye2020.media.L"),
+    ("interface_model_unknown", _set(INTERFACE + ("model",), "spline"), "debye2020.interface.model"),
+    ("interface_bracket_reversed", _set(INTERFACE + ("sigma_bracket",), [2.0, 0.5]),
+     "debye2020.interface.sigma_bracket"),
+    ("interface_bin_not_subpixel", _set(INTERFACE + ("bin_width",), 0.3), "debye2020.interface.bin_width"),
+    ("interface_r_max_half_L", _set(INTERFACE + ("r_max_over_length",), 25.0),
+     "debye2020.interface.r_max_over_length"),
+    ("fits_euler_beyond_r_max", _set(FITS + ("euler_fit_r_max_alt_over_a",), 9.0),
+     "debye2020.fits.euler_fit_r_max_alt_over_a"),
+    ("fits_pore_F_min_one", _set(FITS + ("pore_fit_F_min",), 1.0), "debye2020.fits.pore_fit_F_min"),
+    ("disks_phi2_not_a_media_phi2", _set(DISKS + ("phi2",), 0.35), "debye2020.overlapping_disks.phi2"),
     ("k_sigma_negative", _set(("comparison", "k_sigma"), -3.0), "comparison.k_sigma"),
     ("seed_negative", _set(("seed",), -1), "seed"),
     ("unknown_top_key", _set(("sead",), 1), "sead"),

@@ -97,7 +97,8 @@ def _cross_checks(config: dict) -> list[str]:
 
 
 def _debye2020_checks(section: dict, config: dict) -> list[str]:
-    """debye2020.media, .chords, .overlapping_disks: ranges that must fit the images."""
+    """debye2020.media, .chords, .overlapping_disks, .interface, .fits: ranges that must fit
+    the images and windows that must lie inside the computed ranges."""
     problems = []
     media = section["media"]
     for key in ("a", "lc"):
@@ -138,6 +139,55 @@ def _debye2020_checks(section: dict, config: dict) -> list[str]:
             f"{disks['compare_r_max_over_R']:g} exceeds s2_r_max_over_R = "
             f"{disks['s2_r_max_over_R']:g} (cannot compare bins that are not computed)"
         )
+    if not any(abs(disks["phi2"] - phi) < 1e-12 for phi in media["phi2"]):
+        problems.append(
+            f"config key 'debye2020.overlapping_disks.phi2': {disks['phi2']:g} must be one of "
+            f"debye2020.media.phi2 {media['phi2']} (Sec. VI compares all models at one phi2, "
+            "Figs. 9-12)"
+        )
+    interface = section["interface"]
+    low, high = interface["sigma_bracket"]
+    if not low < high:
+        problems.append(
+            "config key 'debye2020.interface.sigma_bracket': need [low, high] with low < high, "
+            f"got {interface['sigma_bracket']}"
+        )
+    cells = interface["bin_width"] * interface["supersample"]
+    if abs(cells - round(cells)) > 1e-9 or round(cells) < 1:
+        problems.append(
+            f"config key 'debye2020.interface.bin_width': {interface['bin_width']:g} pixels must be "
+            f"a whole multiple of the sub-pixel 1/supersample = {1 / interface['supersample']:g}"
+        )
+    for part, length_key in (("media", "a"), ("overlapping_disks", "radius")):
+        values = section[part]
+        r_max = interface["r_max_over_length"] * values[length_key]
+        if r_max >= values["L"] / 2:
+            problems.append(
+                "config key 'debye2020.interface.r_max_over_length': F_sv, F_ss are wanted out "
+                f"to {r_max:g} pixels for {part}, which must be < L/2 = {values['L'] / 2:g}"
+            )
+    if interface["r_max_over_length"] * radius + 2 * radius > side:
+        problems.append(
+            "config key 'debye2020.interface.r_max_over_length': on the periodic image the exact "
+            "Eqs. (35)-(36) hold for r <= L - 2R; need r_max_over_length * R + 2R <= L"
+        )
+    fits = section["fits"]
+    for key in ("formula_r_max_over_a", "euler_fit_r_max_over_a", "euler_fit_r_max_alt_over_a"):
+        if fits[key] > interface["r_max_over_length"]:
+            problems.append(
+                f"config key 'debye2020.fits.{key}': {fits[key]:g} exceeds "
+                f"interface.r_max_over_length = {interface['r_max_over_length']:g} "
+                "(F_sv is not computed that far)"
+            )
+    for key, r_min in (("formula_r_max_over_a", fits["formula_r_min"]),
+                       ("euler_fit_r_max_over_a", fits["euler_fit_r_min"]),
+                       ("euler_fit_r_max_alt_over_a", fits["euler_fit_r_min"])):
+        if fits[key] * media["a"] <= r_min + 2 * interface["bin_width"]:
+            problems.append(
+                f"config key 'debye2020.fits.{key}': the window ends at {fits[key] * media['a']:g} "
+                f"pixels, too close to its start {r_min:g} for a fit over radial bins of "
+                f"{interface['bin_width']:g} pixels"
+            )
     return problems
 
 

@@ -1,11 +1,13 @@
 # Ma & Torquato, PRE 102, 043310 (2020): Debye random media.
 #
-# Built so far:
 # * Sec. IV: Debye random media by the accelerated Yeong-Torquato construction
-#   -> S2 and Delta S2 per volume fraction -> Figs. 1, 2 and tables/numbers.csv;
-# * Sec. VI A slice: digitized overlapping disks -> S2 of the void phase (FFT
-#   estimator) -> validation figure and comparison rows against Eqs. (32)-(33).
-# The other descriptors, fits and Figs. 3-12 are the rest of issue #3.
+#   -> S2 and Delta S2 per volume fraction -> Figs. 1, 2;
+# * Sec. V: chords and lineal path (Figs. 6, 7); surface correlation functions and
+#   pore sizes on Ma-Torquato level sets tuned to the exact s (Figs. 3-5); fits;
+# * Sec. VI: digitized overlapping disks (validation of every estimator against the
+#   exact Eqs. 32-39) and equilibrium hard disks (images from debye2020_hard_disks.smk,
+#   included before this file) -> Figs. 8-12;
+# * tables/numbers.csv and comparison.csv.
 
 import re
 
@@ -165,19 +167,6 @@ rule debye2020_fig07:
         "../scripts/debye2020/fig06_07.py"
 
 
-rule debye2020_numbers:
-    """tables/numbers.csv: our counterparts of the numbers quoted in the text."""
-    input:
-        s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
-        fits=LINEAL_FITS,
-        code=package_sources("compare/debye2020.py"),
-    output:
-        "results/debye2020/tables/numbers.csv",
-    log:
-        "results/debye2020/logs/numbers.log",
-    script:
-        "../scripts/debye2020/numbers.py"
-
 DISKS = config["debye2020"]["overlapping_disks"]
 DISKS_DIR = f"results/debye2020/overlapping_disks/phi{DISKS['phi2']:g}"
 DISKS_S2 = f"results/debye2020/descriptors/overlapping_disks_phi{DISKS['phi2']:g}_S2.nc"
@@ -257,21 +246,136 @@ rule debye2020_overlapping_disks_chords:
         "../scripts/debye2020/chords.py"
 
 
+# --------------------------------------------------------------------------- level sets
+
+INTERFACE = config["debye2020"]["interface"]
+FITS = config["debye2020"]["fits"]
+LEVEL_SET_SURFACE = "results/debye2020/descriptors/{system}_surface.nc"
+LEVEL_SET_PORES = "results/debye2020/descriptors/{system}_pores.nc"
+SURFACE_PORE_FITS = "results/debye2020/fits/surface_pores.nc"
+DISKS_SYSTEM = f"overlapping_disks_phi{DISKS['phi2']:g}"
+COMPARISON_PHI2 = f"{DISKS['phi2']:g}"  # Sec. VI: all three models at this phi2
+# Equilibrium hard disks come from the hard-particles part (debye2020_hard_disks.smk):
+# HARD_DISKS_SAMPLES, a list of results/debye2020/hard_disks/phi0.3/sample{k}.nc.
+HARD_DISKS_READY = "HARD_DISKS_SAMPLES" in globals()
+
+LEVEL_SET_SYSTEMS = {
+    f"media_phi{name}": {
+        "samples": expand(MEDIA_SAMPLE, phi2=name, k=range(MEDIA["n_samples"])),
+        "target": {"model": "debye", "phi2": phi, "a": MEDIA["a"]},
+    }
+    for name, phi in MEDIA_PHI2.items()
+}
+LEVEL_SET_SYSTEMS[DISKS_SYSTEM] = {
+    "samples": expand(f"{DISKS_DIR}/sample{{k}}.nc", k=range(DISKS["n_samples"])),
+    "target": {"model": "overlapping_disks", "phi2": DISKS["phi2"], "radius": DISKS["radius"]},
+}
+if HARD_DISKS_READY:
+    HARD_DISKS_SYSTEM = "hard_disks_" + Path(HARD_DISKS_SAMPLES[0]).parent.name
+    LEVEL_SET_SYSTEMS[HARD_DISKS_SYSTEM] = {
+        "samples": list(HARD_DISKS_SAMPLES),
+        "target": {"model": "hard_disks"},  # radius, phi2 from the files' attributes
+    }
+
+
+def level_set_files(system):
+    return {"surface": LEVEL_SET_SURFACE.format(system=system),
+            "pores": LEVEL_SET_PORES.format(system=system)}
+
+
+wildcard_constraints:
+    system="|".join(re.escape(name) for name in LEVEL_SET_SYSTEMS),
+
+
+rule debye2020_level_set:
+    """F_sv, F_ss, s, Euler characteristic, wrapping (Sec. V A) and F, P, <delta> (Sec. V B) of
+    one system's images, on level sets whose Gaussian width is tuned to the exact s."""
+    input:
+        samples=lambda wildcards: LEVEL_SET_SYSTEMS[wildcards.system]["samples"],
+        code=package_sources("describe/chords.py", "describe/surface.py", "describe/pore_size.py",
+                             "describe/percolation.py", "describe/two_phase.py", "theory/debye.py",
+                             "theory/debye_formulas.py",
+                             "theory/overlapping.py", "theory/hard_disks.py", "seeding.py"),
+    output:
+        surface=LEVEL_SET_SURFACE,
+        pores=LEVEL_SET_PORES,
+    params:
+        system=lambda wildcards: wildcards.system,
+        target=lambda wildcards: LEVEL_SET_SYSTEMS[wildcards.system]["target"],
+        interface=INTERFACE,
+        seed=config["seed"],
+    log:
+        "results/debye2020/logs/level_set_{system}.log",
+    threads: 1
+    resources:
+        mem_mb=3000,
+    script:
+        "../scripts/debye2020/level_set.py"
+
+
+rule debye2020_fit_surface_pores:
+    """Eqs. (24), (26) against F_sv, F_ss; Eq. (27) fits, the p1 cubic and Eq. (28); the
+    specific Euler characteristic (Eq. 13); wrapping fractions -- per phi2 of the media."""
+    input:
+        surface=[level_set_files(f"media_phi{name}")["surface"] for name in MEDIA_PHI2],
+        pores=[level_set_files(f"media_phi{name}")["pores"] for name in MEDIA_PHI2],
+        code=package_sources("fit/__init__.py", "fit/debye2020.py", "theory/debye.py",
+                             "theory/debye_formulas.py"),
+    output:
+        SURFACE_PORE_FITS,
+    params:
+        a=MEDIA["a"],
+        fits=FITS,
+    log:
+        "results/debye2020/logs/fit_surface_pores.log",
+    script:
+        "../scripts/debye2020/fit_surface_pores.py"
+
+
+def comparison_models():
+    """The Sec. VI comparison systems whose level sets exist in this build."""
+    return [DISKS_SYSTEM] + ([HARD_DISKS_SYSTEM] if HARD_DISKS_READY else [])
+
+
+rule debye2020_numbers:
+    """tables/numbers.csv: our counterparts of the numbers quoted in the text, and more."""
+    input:
+        s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
+        fits=LINEAL_FITS,
+        surface_pore_fits=SURFACE_PORE_FITS,
+        models_surface=[level_set_files(name)["surface"] for name in comparison_models()],
+        models_pores=[level_set_files(name)["pores"] for name in comparison_models()],
+        code=package_sources("compare/debye2020.py", "theory/overlapping.py",
+                             *(["theory/scaled_particle.py"] if HARD_DISKS_READY else [])),
+    output:
+        "results/debye2020/tables/numbers.csv",
+    log:
+        "results/debye2020/logs/numbers.log",
+    script:
+        "../scripts/debye2020/numbers.py"
+
+
 rule debye2020_comparison:
     """results/debye2020/comparison.csv: every computed value against its reference."""
     input:
         s2=DISKS_S2,
         disk_chords=DISKS_CHORDS,
+        disk_surface=level_set_files(DISKS_SYSTEM)["surface"],
+        disk_pores=level_set_files(DISKS_SYSTEM)["pores"],
         fits=LINEAL_FITS,
+        media_s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
+        surface_pore_fits=SURFACE_PORE_FITS,
         quoted="config/reference/debye2020_quoted_numbers.csv",
         code=package_sources("compare/__init__.py", "compare/debye2020.py", "theory/overlapping.py"),
     output:
         "results/debye2020/comparison.csv",
     params:
-        radius=DISKS["radius"],
-        phi2=DISKS["phi2"],
-        L=DISKS["L"],
+        overlapping_disks=DISKS,
+        media={key: MEDIA[key] for key in ("a", "lc", "L", "phi2", "n_samples")},
+        hard_disks_phi2=(float(Path(HARD_DISKS_SAMPLES[0]).parent.name.removeprefix("phi"))
+                         if HARD_DISKS_READY else None),
         compare_r_max=DISKS["compare_r_max_over_R"] * DISKS["radius"],
+        formula_r_min=FITS["formula_r_min"],
         k_sigma=config["comparison"]["k_sigma"],
     log:
         "results/debye2020/logs/comparison.log",
@@ -279,23 +383,200 @@ rule debye2020_comparison:
         "../scripts/debye2020/comparison.py"
 
 
+# --------------------------------------------------------------------------- figures 3-5, 8-12
+
+MEDIA_LEVEL_SET = [level_set_files(f"media_phi{name}") for name in MEDIA_PHI2]
+LEVEL_SET_FIGURE = "results/debye2020/validation/overlapping_disks_level_set.pdf"
+
+
+def figure_outputs(number):
+    return {"pdf": f"results/debye2020/figures/fig{number:02d}.pdf",
+            "png": f"results/debye2020/figures/fig{number:02d}.png"}
+
+
+rule debye2020_fig03:
+    """Fig. 3: F_sv of the Debye media per phi2, with Eq. (24)."""
+    input:
+        surface=[files["surface"] for files in MEDIA_LEVEL_SET],
+        code=package_sources("plot/style.py", "plot/debye2020.py", "theory/debye.py",
+                             "theory/debye_formulas.py"),
+    output:
+        **figure_outputs(3),
+    params:
+        a=MEDIA["a"],
+        figure="fig03_surface_void",
+    log:
+        "results/debye2020/logs/fig03.log",
+    script:
+        "../scripts/debye2020/fig03_04.py"
+
+
+rule debye2020_fig04:
+    """Fig. 4: F_ss of the Debye media per phi2, with Eq. (26)."""
+    input:
+        surface=[files["surface"] for files in MEDIA_LEVEL_SET],
+        code=package_sources("plot/style.py", "plot/debye2020.py", "theory/debye.py",
+                             "theory/debye_formulas.py"),
+    output:
+        **figure_outputs(4),
+    params:
+        a=MEDIA["a"],
+        figure="fig04_surface_surface",
+    log:
+        "results/debye2020/logs/fig04.log",
+    script:
+        "../scripts/debye2020/fig03_04.py"
+
+
+rule debye2020_fig05:
+    """Fig. 5: P(delta) phi1/s per phi2 with Eq. (27); <delta>(phi2) with Eq. (28)."""
+    input:
+        pores=[files["pores"] for files in MEDIA_LEVEL_SET],
+        fits=SURFACE_PORE_FITS,
+        code=package_sources("plot/style.py", "plot/debye2020.py", "theory/debye.py",
+                             "theory/debye_formulas.py"),
+    output:
+        **figure_outputs(5),
+    params:
+        a=MEDIA["a"],
+    log:
+        "results/debye2020/logs/fig05.log",
+    script:
+        "../scripts/debye2020/fig05.py"
+
+
+rule debye2020_fig08:
+    """Fig. 8: one image of overlapping disks and one of equilibrium hard disks."""
+    input:
+        samples=[f"{DISKS_DIR}/sample0.nc"] + ([HARD_DISKS_SAMPLES[0]] if HARD_DISKS_READY else []),
+        code=package_sources("plot/style.py", "plot/debye2020.py"),
+    output:
+        **figure_outputs(8),
+    params:
+        titles=["overlapping disks"] + (["equilibrium hard disks"] if HARD_DISKS_READY else []),
+    log:
+        "results/debye2020/logs/fig08.log",
+    script:
+        "../scripts/debye2020/fig08.py"
+
+
+def section6_inputs(number):
+    """Inputs of Figs. 9-12: the comparison-phi2 media, overlapping and hard disks."""
+    media = level_set_files(f"media_phi{COMPARISON_PHI2}")
+    disks = level_set_files(DISKS_SYSTEM)
+    if number == 9:
+        files = {"media_surface": media["surface"], "disks_surface": disks["surface"]}
+    elif number == 10:
+        files = {"media_pores": media["pores"], "disks_pores": disks["pores"]}
+    else:
+        files = {"media_chords": MEDIA_CHORDS.format(phi2=COMPARISON_PHI2),
+                 "disks_chords": DISKS_CHORDS}
+    if HARD_DISKS_READY:
+        hard = level_set_files(HARD_DISKS_SYSTEM)
+        files["hard_surface"] = hard["surface"]
+        if number == 10:
+            files["hard_pores"] = hard["pores"]
+    code = ["plot/style.py", "plot/debye2020.py", "theory/debye.py", "theory/debye_formulas.py",
+            "theory/overlapping.py",
+            "theory/hard_disks.py"]
+    if HARD_DISKS_READY:
+        code.append("theory/scaled_particle.py")
+    files["code"] = package_sources(*code)
+    return files
+
+
+SECTION6_PARAMS = {"a": MEDIA["a"], "radius": DISKS["radius"], "phi2": DISKS["phi2"]}
+
+
+rule debye2020_fig09:
+    """Fig. 9: chi_V, F_sv, F_ss of the three models at the comparison phi2, against r s."""
+    input:
+        **section6_inputs(9),
+    output:
+        **figure_outputs(9),
+    params:
+        number=9,
+        **SECTION6_PARAMS,
+    log:
+        "results/debye2020/logs/fig09.log",
+    script:
+        "../scripts/debye2020/section6.py"
+
+
+rule debye2020_fig10:
+    """Fig. 10: P(delta) of the three models, against delta s."""
+    input:
+        **section6_inputs(10),
+    output:
+        **figure_outputs(10),
+    params:
+        number=10,
+        **SECTION6_PARAMS,
+    log:
+        "results/debye2020/logs/fig10.log",
+    script:
+        "../scripts/debye2020/section6.py"
+
+
+rule debye2020_fig11:
+    """Fig. 11: L(z) of the three models, against z s."""
+    input:
+        **section6_inputs(11),
+    output:
+        **figure_outputs(11),
+    params:
+        number=11,
+        **SECTION6_PARAMS,
+    log:
+        "results/debye2020/logs/fig11.log",
+    script:
+        "../scripts/debye2020/section6.py"
+
+
+rule debye2020_fig12:
+    """Fig. 12: p(z) of the three models, against z s."""
+    input:
+        **section6_inputs(12),
+    output:
+        **figure_outputs(12),
+    params:
+        number=12,
+        **SECTION6_PARAMS,
+    log:
+        "results/debye2020/logs/fig12.log",
+    script:
+        "../scripts/debye2020/section6.py"
+
+
+rule debye2020_overlapping_disks_level_set_figure:
+    """Validation figure: level-set F_sv, F_ss, F, P of overlapping disks against Eqs. (35)-(37)."""
+    input:
+        **level_set_files(DISKS_SYSTEM),
+        code=package_sources("plot/style.py", "plot/debye2020.py", "theory/overlapping.py"),
+    output:
+        pdf=LEVEL_SET_FIGURE,
+        png=LEVEL_SET_FIGURE.replace(".pdf", ".png"),
+    params:
+        radius=DISKS["radius"],
+        phi2=DISKS["phi2"],
+    log:
+        "results/debye2020/logs/overlapping_disks_level_set_figure.log",
+    script:
+        "../scripts/debye2020/validation_level_set.py"
+
+
 DEBYE2020_TARGETS = [
     "results/debye2020/comparison.csv",
     "results/debye2020/tables/numbers.csv",
-    "results/debye2020/figures/fig01.pdf",
-    "results/debye2020/figures/fig01.png",
-    "results/debye2020/figures/fig02.pdf",
-    "results/debye2020/figures/fig02.png",
-    "results/debye2020/figures/fig06.pdf",
-    "results/debye2020/figures/fig06.png",
-    "results/debye2020/figures/fig07.pdf",
-    "results/debye2020/figures/fig07.png",
     DISKS_FIGURE,
     DISKS_FIGURE.replace(".pdf", ".png"),
-]
+    LEVEL_SET_FIGURE,
+    LEVEL_SET_FIGURE.replace(".pdf", ".png"),
+] + [path for number in (1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12)
+     for path in figure_outputs(number).values()]
 
 
 rule debye2020:
-    """Everything of debye2020 built so far."""
+    """Everything of debye2020."""
     input:
         DEBYE2020_TARGETS,

@@ -16,7 +16,9 @@ import xarray as xr
 from randmedia.compare import compare
 from randmedia.describe.two_phase import RadialBinning
 from randmedia.stats import standard_error
-from randmedia.theory.overlapping import chord_rate, lineal_path_void, s2_void
+from randmedia.theory.overlapping import (chord_rate, lineal_path_void, pore_size_complementary_cdf,
+                                          pore_size_moment, s2_void, specific_surface,
+                                          surface_surface, surface_void)
 
 
 def overlapping_disks_s2_rows(
@@ -105,11 +107,22 @@ def overlapping_disks_chord_rows(chords: xr.Dataset, *, radius: float, phi2: flo
 
 
 def lineal_size_rows(fits: xr.Dataset, reference, *, k_sigma: float) -> list[dict]:
-    """<R^2>/<R> of Eq. (30), averaged over phi2, against the quoted (0.94 +- 0.04) a."""
+    """<R^2>/<R> of Eq. (30), averaged over phi2, against the quoted (0.94 +- 0.04) a; and the
+    spread 0.04 against the standard deviation of <R^2>/<R> over the phi2 values (ddof = 1),
+    whose own standard error, std / sqrt(2 (n - 1)) for n values, is the row's SEM."""
     quoted = reference.set_index("quantity")["value"]
     ratio = fits["R2_over_R"].values
     error = fits["R2_over_R_err"].values
+    spread = float(np.std(ratio, ddof=1)) if ratio.size > 1 else float("nan")
+    spread_sem = spread / np.sqrt(2 * (ratio.size - 1)) if ratio.size > 1 else 0.0
     return [compare(
+        quantity="R2_over_R_spread",
+        key="standard deviation over phi2, units of a",
+        published=float(quoted["R2_over_R_spread"]),
+        ours=spread,
+        ours_sem=float(spread_sem),
+        k_sigma=k_sigma,
+    ), compare(
         quantity="R2_over_R_mean",
         key="mean over phi2, units of a",
         published=float(quoted["R2_over_R_mean"]),
@@ -134,4 +147,306 @@ def lineal_numbers(fits: xr.Dataset) -> "pd.DataFrame":
             rows.append({"quantity": name, "phi2": float(phi2), "mean": value,
                          "sem": float(fits[error].values[i]), "min": np.nan, "max": np.nan,
                          "n_samples": np.nan, "unit": unit, "where": where})
+    return pd.DataFrame(rows)
+
+
+# --------------------------------------------------------------------------- level-set descriptors
+
+
+def _fine_binning(ds: xr.Dataset) -> tuple[RadialBinning, int]:
+    """The radial binning a surface-function dataset was computed on (sub-pixel grid)."""
+    m = int(ds.attrs["supersample"])
+    side = int(ds.attrs["image_side"])
+    binning = RadialBinning.build((side * m, side * m), float(ds.attrs["r_max"]) * m,
+                                  float(ds.attrs["bin_width"]) * m)
+    if not np.allclose(binning.r_mean / m, ds["r"].values):
+        raise ValueError("surface dataset bins do not match the image size and r_max it claims")
+    return binning, m
+
+
+def overlapping_disks_surface_rows(surface: xr.Dataset, *, radius: float, phi2: float,
+                                   compare_r_max: float, r_min: float, k_sigma: float,
+                                   singular_width: float = 1.0) -> list[dict]:
+    """F_sv and F_ss of the level sets of digitized overlapping disks against Eqs. (35)-(36),
+    bin by bin for r_min <= r <= compare_r_max. Left out, as below the resolution of a pixel
+    image: the bins under r_min (the interface deposit and the Gaussian filter smear F_ss's
+    1/r divergence and F_sv's cusp-dominated start) and, for F_ss, the bins within
+    ``singular_width`` pixels of its divergence at r = 2R (the digitized level set's disk
+    radii scatter by a fraction of a pixel, which smears that singularity).
+
+    Reference: the exact bin average over the sub-pixel displacements in the bin (no labelling
+    bias; finite across the integrable F_ss singularity at r = 2R). Systematic margin: the
+    change of that average when the exact function is first smeared over +-1 sub-pixel (weights
+    1/4, 1/2, 1/4) -- the resolution of the cloud-in-cell interface deposit -- which matters
+    only next to r = 0 and r = 2R."""
+    binning, m = _fine_binning(surface)
+    h = 1.0 / m
+    rows = []
+    for name, exact in (("F_sv", lambda d: surface_void(d, radius, phi2, dim=2)),
+                        ("F_ss", lambda d: surface_surface(d, radius, phi2, dim=2))):
+        def in_pixels(d, f=exact):
+            with np.errstate(divide="ignore", invalid="ignore"):
+                return f(d / m)
+
+        def smeared(d, f=exact):
+            with np.errstate(divide="ignore", invalid="ignore"):
+                x = d / m
+                return 0.25 * f(np.abs(x - h)) + 0.5 * f(x) + 0.25 * f(x + h)
+
+        reference = binning.average_of(in_pixels)
+        with np.errstate(invalid="ignore"):
+            margin = np.abs(binning.average_of(smeared) - reference)
+        for i, r in enumerate(surface["r"].values):
+            if r < r_min or r > compare_r_max or not np.isfinite(reference[i]):
+                continue
+            if name == "F_ss" and abs(r - 2 * radius) < singular_width:
+                continue
+            rows.append(compare(
+                quantity=f"{name}_overlapping_disks_phi2={phi2:g}",
+                key=f"r/R={r / radius:.4f}",
+                published=float(reference[i]),
+                ours=float(surface[name].values[i]),
+                ours_sem=float(surface[f"{name}_sem"].values[i]),
+                k_sigma=k_sigma,
+                systematic=float(margin[i]) if np.isfinite(margin[i]) else 0.0,
+            ))
+    s = surface["s_samples"].values
+    rows.append(compare(
+        quantity=f"specific_surface_overlapping_disks_phi2={phi2:g}", key="s R (Eq. 34; sigma tuned to it)",
+        published=specific_surface(radius, phi2, 2) * radius, ours=float(s.mean() * radius),
+        ours_sem=float(standard_error(s) * radius), k_sigma=k_sigma))
+    eta = -np.log1p(-phi2)
+    mecke = eta / (np.pi * radius**2) * (1.0 - phi2) * (1.0 - eta)
+    euler = surface["euler_samples"].values
+    rows.append(compare(
+        quantity=f"euler_characteristic_overlapping_disks_phi2={phi2:g}",
+        key="chi/A R^2 (Mecke: rho phi1 (1 - eta))",
+        published=mecke * radius**2, ours=float(euler.mean() * radius**2),
+        ours_sem=float(standard_error(euler) * radius**2), k_sigma=k_sigma))
+    return rows
+
+
+def overlapping_disks_pore_rows(pores: xr.Dataset, *, radius: float, phi2: float,
+                                k_sigma: float, F_min: float = 0.01) -> list[dict]:
+    """F(delta) and P(delta) of the level sets of digitized overlapping disks against Eq. (37)
+    every R/4 while the exact F >= F_min (P as the exact bin average (F(lo) - F(hi)) / width,
+    no labelling bias), and <delta> against the exact first moment (Eq. 18)."""
+    rows = []
+    delta = pores["delta"].values
+    exact_F = pore_size_complementary_cdf(delta, radius, phi2, dim=2)
+    width = float(pores.attrs["delta_bin_width"])
+    step = max(1, int(round(radius / 4 / width)))
+    for i in range(0, delta.size - 1, step):
+        if exact_F[i] < F_min:
+            break
+        rows.append(compare(
+            quantity=f"F_pore_overlapping_disks_phi2={phi2:g}", key=f"delta/R={delta[i] / radius:.3f}",
+            published=float(exact_F[i]), ours=float(pores["F"].values[i]),
+            ours_sem=float(pores["F_sem"].values[i]), k_sigma=k_sigma))
+        rows.append(compare(
+            quantity=f"P_pore_overlapping_disks_phi2={phi2:g}",
+            key=f"delta/R={pores['delta_bin'].values[i] / radius:.4f}",
+            published=float((exact_F[i] - exact_F[i + 1]) / width * radius),
+            ours=float(pores["P"].values[i] * radius), ours_sem=float(pores["P_sem"].values[i] * radius),
+            k_sigma=k_sigma))
+    mean = pores["mean_delta_samples"].values
+    rows.append(compare(
+        quantity=f"mean_pore_size_overlapping_disks_phi2={phi2:g}", key="<delta>/R (Eq. 18 of Eq. 37)",
+        published=pore_size_moment(1, radius, phi2, dim=2) / radius, ours=float(mean.mean() / radius),
+        ours_sem=float(standard_error(mean) / radius), k_sigma=k_sigma))
+    return rows
+
+
+def _quoted(reference) -> dict:
+    return dict(zip(reference["quantity"], reference["value"]))
+
+
+def parameter_rows(reference, media: dict, overlapping_disks: dict, hard_disks_phi2=None) -> list[dict]:
+    """The quoted parameters against the configured ones: a, l_c, L, each phi2, the number of
+    constructions per phi2, the comparison volume fraction (overlapping and hard disks).
+    Tolerance 0: a row passes exactly when the config is the paper's."""
+    quoted = _quoted(reference)
+    rows = []
+    for name, ours in (("length_scale_a", media["a"]), ("cutoff_lc", media["lc"]),
+                       ("system_size_L", media["L"]), ("realizations_per_phi2", media["n_samples"])):
+        rows.append(compare(quantity=name, key="config", published=float(quoted[name]),
+                            ours=float(ours), ours_sem=0.0, k_sigma=1.0))
+    published_phi2 = [float(v) for v in str(quoted["phi2_values"]).split(";")]
+    configured = sorted(media["phi2"])
+    for k, value in enumerate(published_phi2):
+        ours = configured[k] if k < len(configured) else float("nan")
+        rows.append(compare(quantity="phi2_values", key=f"phi2[{k}]", published=value,
+                            ours=float(ours), ours_sem=0.0, k_sigma=1.0))
+    rows.append(compare(quantity="comparison_phi2", key="overlapping disks",
+                        published=float(quoted["comparison_phi2"]),
+                        ours=float(overlapping_disks["phi2"]), ours_sem=0.0, k_sigma=1.0))
+    rows.append(compare(quantity="comparison_phi2", key="equilibrium hard disks",
+                        published=float(quoted["comparison_phi2"]),
+                        ours=float("nan") if hard_disks_phi2 is None else float(hard_disks_phi2),
+                        ours_sem=0.0, k_sigma=1.0))
+    return rows
+
+
+def construction_rows(reference, s2_by_phi2: dict, *, k_sigma: float) -> list[dict]:
+    """Delta S2 = 0.6 ~ 2 x 10^-4 (Sec. IV): the smallest and largest per-phi2 mean Delta S2
+    against the quoted ends, for both ranges of bins (README: which bins the paper means is
+    not said). Tolerance k_sigma x the SEM of that phi2's mean."""
+    quoted = _quoted(reference)
+    rows = []
+    for name, where in (("delta_S2_full", "bins 0 < r < L/2"), ("delta_S2", "bins 0 < r <= l_c")):
+        means = {phi2: (ds[name].values.mean(), standard_error(ds[name].values))
+                 for phi2, ds in s2_by_phi2.items()}
+        low = min(means, key=lambda p: means[p][0])
+        high = max(means, key=lambda p: means[p][0])
+        for end, phi2 in (("min", low), ("max", high)):
+            rows.append(compare(
+                quantity=f"mean_abs_S2_discrepancy_{end}", key=f"{where}, phi2={phi2:g}",
+                published=float(quoted[f"mean_abs_S2_discrepancy_{end}"]),
+                ours=float(means[phi2][0]), ours_sem=float(means[phi2][1]), k_sigma=k_sigma))
+    return rows
+
+
+def surface_pore_rows(reference, fits: xr.Dataset, *, a: float, k_sigma: float) -> list[dict]:
+    """Rows of the Sec. V A-B numbers: the p1 cubic coefficients, p0 = P(0) and the free p2
+    against pi phi2 / a, the normalization of Eq. (27), the range of the relative error of
+    Eq. (28), and the specific Euler characteristic per phi2, plus the percolation threshold
+    (wrapping-fraction crossing; systematic margin: the bracketing phi2 spacing)."""
+    quoted = _quoted(reference)
+    rows = []
+    coefficients = [float(v) for v in str(quoted["p1_coefficients"]).split(";")]
+    covariance = fits["p1_coefficients_covariance"].values
+    for k, published in enumerate(coefficients):
+        rows.append(compare(
+            quantity="p1_coefficients", key=f"c{k + 1} (a^2 p1 = c1 phi2 + c2 phi2^2 + c3 phi2^3)",
+            published=published, ours=float(fits["p1_coefficients"].values[k]),
+            ours_sem=float(np.sqrt(covariance[k, k])), k_sigma=k_sigma))
+    for i, phi2 in enumerate(fits["phi2"].values):
+        formula = np.pi * phi2 / a
+        rows.append(compare(quantity="p0", key=f"phi2={phi2:g}: P(0) = s/phi1, first bin (units 1/a)",
+                            published=formula * a, ours=float(fits["p0_measured"].values[i] * a),
+                            ours_sem=float(fits["p0_measured_sem"].values[i] * a), k_sigma=k_sigma,
+                            systematic=float(fits["p0_bin_margin"].values[i] * a)))
+        rows.append(compare(quantity="p2", key=f"phi2={phi2:g}: free p2 of Eq. (27) (units 1/a)",
+                            published=formula * a, ours=float(fits["p2_free"].values[i] * a),
+                            ours_sem=float(fits["p2_free_sem"].values[i] * a), k_sigma=k_sigma))
+        rows.append(compare(quantity="p2", key=f"phi2={phi2:g}: normalization of Eq. (27), p0 = p2",
+                            published=1.0, ours=float(fits["eq27_normalization"].values[i]),
+                            ours_sem=0.0, k_sigma=k_sigma, systematic=1e-8))
+        rows.append(compare(
+            quantity="specific_euler_characteristic",
+            key=f"phi2={phi2:g}: logistic slope of F_sv at 0 (units 1/a^2)",
+            published=float(fits["euler_formula"].values[i] * a * a),
+            ours=float(fits["euler_slope"].values[i] * a * a),
+            ours_sem=float(fits["euler_slope_sem"].values[i] * a * a), k_sigma=k_sigma,
+            systematic=float(fits["euler_slope_window_shift"].values[i] * a * a)))
+    relative = np.abs(fits["eq28_rel_error"].values)
+    errors = fits["eq28_rel_error_sem"].values
+    for end, index in (("min", int(np.argmin(relative))), ("max", int(np.argmax(relative)))):
+        rows.append(compare(
+            quantity=f"mean_pore_size_formula_rel_error_{end}",
+            key=f"|Eq. (28) / simulated <delta> - 1|, phi2={fits['phi2'].values[index]:g}",
+            published=float(quoted[f"mean_pore_size_formula_rel_error_{end}"]),
+            ours=float(relative[index]), ours_sem=float(errors[index]), k_sigma=k_sigma))
+    rows.append(compare(
+        quantity="percolation_threshold_phi2",
+        key="phase-2 wrapping fraction crosses 1/2 (phase inversion used for phi2 > 1/2)",
+        published=float(quoted["percolation_threshold_phi2"]),
+        ours=float(fits.attrs["percolation_crossing"]),
+        ours_sem=float(np.nan_to_num(fits.attrs["percolation_crossing_err"])), k_sigma=k_sigma,
+        systematic=float(fits.attrs["percolation_bracket"])
+        if np.isfinite(fits.attrs["percolation_bracket"]) else 0.0))
+    return rows
+
+
+def _number(quantity, phi2, mean, sem=np.nan, unit="1", where="", **extra) -> dict:
+    row = {"quantity": quantity, "phi2": float(phi2), "mean": float(mean), "sem": float(sem),
+           "min": np.nan, "max": np.nan, "n_samples": np.nan, "unit": unit, "where": where}
+    row.update(extra)
+    return row
+
+
+def surface_pore_numbers(fits: xr.Dataset) -> "pd.DataFrame":
+    """numbers.csv rows of the Sec. V A-B fits (layout of :func:`construction_numbers`)."""
+    import pandas as pd
+
+    a = float(fits.attrs["a"])
+    per_phi2 = [
+        ("s", "s_sem", "1/pixel", "level-set specific surface (tuned to Eq. 22)"),
+        ("sigma", None, "pixel", "tuned Gaussian width"),
+        ("F_sv_chi2_per_dof", None, "1", "Eq. (24) vs F_sv, SEM-weighted, no free parameter"),
+        ("F_sv_max_abs_rel_dev", None, "1", "Eq. (24) vs F_sv, largest relative deviation"),
+        ("F_sv_mean_rel_dev", None, "1", "Eq. (24) vs F_sv, mean relative deviation"),
+        ("F_ss_chi2_per_dof", None, "1", "Eq. (26) vs F_ss, SEM-weighted, no free parameter"),
+        ("F_ss_max_abs_rel_dev", None, "1", "Eq. (26) vs F_ss, largest relative deviation"),
+        ("F_ss_mean_rel_dev", None, "1", "Eq. (26) vs F_ss, mean relative deviation"),
+        ("euler_slope", "euler_slope_sem", "1/pixel^2", "Eq. (13): logistic slope of F_sv at r = 0"),
+        ("euler_slope_window_shift", None, "1/pixel^2", "slope change with the alternative window"),
+        ("euler_topological", "euler_topological_sem", "1/pixel^2", "bit-quad Euler characteristic of the level set"),
+        ("euler_formula", None, "1/pixel^2", "pi (phi1 - phi2) phi1 phi2 / (4 a^2)"),
+        ("p1", "p1_sem", "1/pixel^2", "Eq. (27), p0 = p2 = pi phi2 / a"),
+        ("p1_chi2_per_dof", None, "1", "Eq. (27) fitted to the mean P (SEM-weighted)"),
+        ("p2_free", "p2_free_sem", "1/pixel", "Eq. (27) with p2 free (paper: pi phi2 / a)"),
+        ("p0_measured", "p0_measured_sem", "1/pixel", "P(0), first bin (paper: s/phi1 = pi phi2 / a)"),
+        ("p0_bin_margin", None, "1/pixel", "shift of Eq. (27) over half a bin (stated margin)"),
+        ("p0_formula", None, "1/pixel", "pi phi2 / a"),
+        ("eq27_normalization", None, "1", "integral of Eq. (27), p0 = p2"),
+        ("mean_delta", "mean_delta_sem", "pixel", "simulated <delta> (level-set distances)"),
+        ("mean_delta_eq28", None, "pixel", "Eq. (28), paper coefficients"),
+        ("mean_delta_eq28_own_coefficients", None, "pixel", "Eq. (28), our cubic"),
+        ("eq28_rel_error", "eq28_rel_error_sem", "1", "(Eq. 28 - simulated) / simulated (paper: 4-7 %)"),
+        ("mean_delta_pixel_centres", None, "pixel", "diagnostic: pixel-centre distance transform"),
+        ("eq28_rel_error_pixel_centres", None, "1", "Eq. (28) vs the pixel-centre diagnostic"),
+        ("wraps_phase2", None, "1", "fraction of samples with a wrapping phase-2 cluster"),
+        ("wraps_phase1", None, "1", "fraction of samples with a wrapping phase-1 cluster"),
+    ]
+    rows = []
+    for i, phi2 in enumerate(fits["phi2"].values):
+        for name, error, unit, where in per_phi2:
+            rows.append(_number(name, phi2, fits[name].values[i],
+                                fits[error].values[i] if error else np.nan, unit, where,
+                                n_samples=float(fits["n_samples"].values[i])))
+    covariance = fits["p1_coefficients_covariance"].values
+    for k, value in enumerate(fits["p1_coefficients"].values):
+        rows.append(_number(f"p1_coefficient_c{k + 1}", np.nan, value, np.sqrt(covariance[k, k]), "1",
+                            "a^2 p1 = c1 phi2 + c2 phi2^2 + c3 phi2^3 (paper: 1.05, -2.41, 4.16)"))
+    rows.append(_number("p1_cubic_chi2_per_dof", np.nan, fits.attrs["p1_cubic_chi2_per_dof"], np.nan,
+                        "1", "SEM-weighted cubic fit of p1(phi2)"))
+    rows.append(_number("percolation_threshold_phi2", np.nan, fits.attrs["percolation_crossing"],
+                        fits.attrs["percolation_crossing_err"], "1",
+                        f"wrapping fraction crosses 1/2 (bracket {fits.attrs['percolation_bracket']:g})"))
+    return pd.DataFrame(rows)
+
+
+def level_set_numbers(system: str, surface: xr.Dataset, pores: xr.Dataset) -> "pd.DataFrame":
+    """numbers.csv rows of one comparison model's level sets (Sec. VI): tuned sigma, s, <delta>,
+    the pixel-centre <delta> diagnostic, the topological Euler characteristic."""
+    import pandas as pd
+
+    phi2 = float(surface.attrs["phi2"])
+    rows = [_number(f"{system}: sigma", phi2, surface.attrs["sigma"], unit="pixel",
+                    where="Gaussian width tuned to the exact s"),
+            _number(f"{system}: s", phi2, surface["s_samples"].values.mean(),
+                    standard_error(surface["s_samples"].values), "1/pixel",
+                    f"exact {float(surface.attrs['s_exact']):.6g}")]
+    for name, unit, where in (("mean_delta_samples", "pixel", "<delta> of the level sets"),
+                              ("mean_delta_pixel_centres_samples", "pixel",
+                               "diagnostic: pixel-centre distance transform")):
+        values = pores[name].values
+        rows.append(_number(f"{system}: {name.removesuffix('_samples')}", phi2, values.mean(),
+                            standard_error(values), unit, where))
+    values = surface["euler_samples"].values
+    rows.append(_number(f"{system}: euler_topological", phi2, values.mean(), standard_error(values),
+                        "1/pixel^2", "bit-quad Euler characteristic of phase 2 of the level set"))
+    radius = float(surface.attrs["length_scale"])
+    model = surface.attrs["model"]
+    if model == "overlapping_disks":
+        theory, where = pore_size_moment(1, radius, phi2, dim=2), "exact, Eq. (18) of Eq. (37)"
+    elif model == "hard_disks":
+        from randmedia.theory.scaled_particle import pore_size_moments
+
+        theory = pore_size_moments(phi2, 2, diameter=2 * radius)[0]
+        where = "scaled-particle theory, Eq. (41) (approximate)"
+    else:
+        theory, where = np.nan, ""
+    rows.append(_number(f"{system}: mean_delta_theory", phi2, theory, unit="pixel", where=where))
     return pd.DataFrame(rows)

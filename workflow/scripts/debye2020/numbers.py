@@ -5,16 +5,24 @@ log = start_job(snakemake)  # noqa: F821
 
 import pandas as pd  # noqa: E402
 
-from randmedia.compare.debye2020 import construction_numbers, lineal_numbers  # noqa: E402
+from randmedia.compare.debye2020 import (construction_numbers, level_set_numbers,  # noqa: E402
+                                         lineal_numbers, surface_pore_numbers)
+from randmedia.describe.pore_size import PORES  # noqa: E402
+from randmedia.describe.surface import SURFACE  # noqa: E402
 from randmedia.describe.two_phase import TWO_POINT  # noqa: E402
 from randmedia.io import VariableSpec, read_dataset, write_csv  # noqa: E402
 
+inputs = snakemake.input  # noqa: F821
 spec = {**TWO_POINT, "delta_S2": VariableSpec(("sample",), "1"),
         "delta_S2_full": VariableSpec(("sample",), "1")}
 s2 = {}
-for path in snakemake.input.s2:  # noqa: F821
+for path in inputs.s2:
     ds = read_dataset(path, spec, attrs=["phi2"])
     s2[float(ds.attrs["phi2"])] = ds
-fits = read_dataset(snakemake.input.fits)  # noqa: F821
-write_csv(pd.concat([construction_numbers(s2), lineal_numbers(fits)], ignore_index=True),
-          snakemake.output[0])  # noqa: F821
+tables = [construction_numbers(s2), lineal_numbers(read_dataset(inputs.fits)),
+          surface_pore_numbers(read_dataset(inputs.surface_pore_fits, attrs=["a"]))]
+for surface_path, pores_path in zip(inputs.models_surface, inputs.models_pores):
+    surface = read_dataset(surface_path, SURFACE,
+                           attrs=["system", "model", "phi2", "sigma", "s_exact", "length_scale"])
+    tables.append(level_set_numbers(surface.attrs["system"], surface, read_dataset(pores_path, PORES)))
+write_csv(pd.concat(tables, ignore_index=True), snakemake.output[0])  # noqa: F821

@@ -1,0 +1,113 @@
+"""Semianalytic and empirical formulas of Debye random media (Ma & Torquato 2020, Sec. V).
+
+Eqs. (24)-(25): F_sv; Eq. (26): F_ss; the specific Euler characteristic that Eq. (24)
+implies through Eq. (13); Eq. (27): the pore-size density, its cumulative form and
+mean (Eq. 28) with the cubic p1(phi2) quoted after Eq. (27). The target two-point
+statistics (Eqs. 21-22) live in :mod:`randmedia.theory.debye`, which the construction
+depends on; these formulas are kept apart so that editing them does not invalidate
+constructed media. Also :func:`model_specific_surface`, the exact s of the paper's three
+models (Eqs. 22, 34, 40).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from randmedia.theory.debye import debye_specific_surface
+
+
+def _check(phi2: float, a: float) -> None:
+    if not 0.0 < phi2 < 1.0:
+        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
+    if a <= 0:
+        raise ValueError(f"a must be > 0, got {a}")
+
+
+def debye_surface_void(r, phi2: float, a: float) -> np.ndarray:
+    """Eqs. (24)-(25): F_sv(r) = s (1 - phi2 + phi2 e^{-r/a}) / (1 + e^{-r/a}), s of Eq. (22);
+    F_sv(0) = s/2, F_sv(inf) = s phi1 (void = phase 1)."""
+    _check(phi2, a)
+    decay = np.exp(-np.asarray(r, dtype=float) / a)
+    return debye_specific_surface(phi2, a) * (1.0 - phi2 + phi2 * decay) / (1.0 + decay)
+
+
+def debye_surface_surface(r, phi2: float, a: float) -> np.ndarray:
+    """Eq. (26): F_ss(r) = (pi^2/a^2) phi1^2 phi2^2 + phi1 phi2 e^{-r/a} / (a r)
+    + e^{-r/a} |phi2 - phi1| / (2 a^2 (1 + e^{-r/a})); diverges as s/(pi r) at r -> 0."""
+    _check(phi2, a)
+    r = np.asarray(r, dtype=float)
+    q = phi2 * (1.0 - phi2)
+    decay = np.exp(-r / a)
+    with np.errstate(divide="ignore"):
+        pair = q * decay / (a * r)
+    return (np.pi * q / a) ** 2 + pair + decay / (1.0 + decay) * abs(1.0 - 2.0 * phi2) / (2.0 * a * a)
+
+
+def debye_euler_characteristic(phi2: float, a: float) -> float:
+    """Specific Euler characteristic from Eq. (24) and Eq. (13): dF_sv/dr at r = 0,
+    pi (phi1 - phi2) phi1 phi2 / (4 a^2) (Sec. V A)."""
+    _check(phi2, a)
+    phi1 = 1.0 - phi2
+    return np.pi * (phi1 - phi2) * phi1 * phi2 / (4.0 * a * a)
+
+
+#: coefficients c1, c2, c3 of p1 = (c1 phi2 + c2 phi2^2 + c3 phi2^3) / a^2 quoted after Eq. (27)
+P1_COEFFICIENTS = (1.05, -2.41, 4.16)
+
+
+def pore_p1(phi2, a: float, coefficients=P1_COEFFICIENTS):
+    """p1 of Eq. (27) from the cubic (c1 phi2 + c2 phi2^2 + c3 phi2^3) / a^2."""
+    phi2 = np.asarray(phi2, dtype=float)
+    c1, c2, c3 = coefficients
+    return (c1 * phi2 + c2 * phi2**2 + c3 * phi2**3) / (a * a)
+
+
+def pore_size_ccdf(delta, p1: float, p2: float) -> np.ndarray:
+    """F(delta) = exp(-p1 delta^2 - p2 delta): the complementary cumulative distribution whose
+    density -dF/ddelta is Eq. (27) with p0 = p2 (the only normalized choice, F(0) = 1)."""
+    delta = np.asarray(delta, dtype=float)
+    return np.exp(-p1 * delta * delta - p2 * delta)
+
+
+def pore_size_density(delta, p0: float, p1: float, p2: float) -> np.ndarray:
+    """Eq. (27): P(delta) = (p0 + 2 p1 delta) exp(-p1 delta^2 - p2 delta)."""
+    delta = np.asarray(delta, dtype=float)
+    return (p0 + 2.0 * p1 * delta) * np.exp(-p1 * delta * delta - p2 * delta)
+
+
+def mean_pore_size(p1: float, p2: float) -> float:
+    """<delta> = integral F = sqrt(pi / p1)/2 exp(p2^2 / (4 p1)) erfc(p2 / (2 sqrt(p1))) for
+    Eq. (27) with p0 = p2 (Eq. 18); with p2 = pi phi2 / a and p1 of the cubic this is Eq. (28).
+    Evaluated as sqrt(pi/p1)/2 * erfcx(.) to stay finite for small p1."""
+    from scipy.special import erfcx
+
+    if p1 <= 0:
+        raise ValueError(f"p1 must be > 0, got {p1}")
+    x = p2 / (2.0 * np.sqrt(p1))
+    return float(0.5 * np.sqrt(np.pi / p1) * erfcx(x))
+
+
+def debye_mean_pore_size(phi2: float, a: float, coefficients=P1_COEFFICIENTS) -> float:
+    """Eq. (28): <delta> with p2 = pi phi2 / a and p1 from the cubic in phi2."""
+    _check(phi2, a)
+    return mean_pore_size(float(pore_p1(phi2, a, coefficients)), np.pi * phi2 / a)
+
+
+def model_specific_surface(model: str, *, phi2: float, a: float | None = None,
+                           radius: float | None = None) -> float:
+    """Exact s of the three models of Ma & Torquato 2020 (units of 1/length of a or R):
+    ``"debye"`` Eq. (22), ``"overlapping_disks"`` Eq. (34), ``"hard_disks"`` Eq. (40)."""
+    from randmedia.theory import hard_disks, overlapping
+
+    if model not in ("debye", "overlapping_disks", "hard_disks"):
+        raise ValueError(f"unknown model {model!r}; expected debye, overlapping_disks or hard_disks")
+    length = a if model == "debye" else radius
+    if length is None:
+        raise ValueError(f"model {model!r} needs {'a' if model == 'debye' else 'radius'}")
+    if model == "debye":
+        return debye_specific_surface(phi2, a)
+    if model == "overlapping_disks":
+        return overlapping.specific_surface(radius, phi2, dim=2)
+    if model == "hard_disks":
+        return hard_disks.specific_surface(radius, phi2)
+    raise ValueError(f"unknown model {model!r}; expected debye, overlapping_disks or hard_disks")

@@ -1,0 +1,57 @@
+"""Equilibrium hard disks: closed forms Ma & Torquato 2020 use in Sec. VI B.
+
+Identical disks of radius R (phase 2, volume fraction phi2) in equilibrium
+along the fluid branch; phase 1 is the matrix (void).
+
+* s = 2 phi2 / R                                                    Eq. (40)
+  (exact for non-overlapping disks: perimeter 2 pi R per disk, rho = phi2/(pi R^2))
+* L(z) = phi1 exp(-(2 phi2 / (pi phi1)) z / R)                      Eq. (42)
+  (Lu & Torquato, PRE A 45, 922 (1992): the matrix lineal-path function of
+  equilibrium hard disks in the approximation the paper uses)
+* p(z) = (2 phi2 / (pi phi1 R)) exp(-(2 phi2 / (pi phi1)) z / R)    Eq. (43)
+  = (l_C / phi1) L''(z) of Eq. (42) by Eq. (19); its mean chord
+  pi phi1 R / (2 phi2) = pi phi1 / s agrees with Eq. (20).
+
+The pore-size density of Eq. (41) (scaled-particle theory) lives in
+:mod:`randmedia.theory.scaled_particle`.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def _check(radius: float, phi2: float) -> None:
+    if radius <= 0:
+        raise ValueError(f"radius must be > 0, got {radius}")
+    if not 0.0 < phi2 < 1.0:
+        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
+
+
+def specific_surface(radius: float, phi2: float) -> float:
+    """Eq. (40): s = 2 phi2 / R."""
+    _check(radius, phi2)
+    return 2.0 * phi2 / radius
+
+
+def chord_rate(radius: float, phi2: float) -> float:
+    """lambda = 2 phi2 / (pi phi1 R): the decay rate of Eqs. (42)-(43), 1 / mean chord."""
+    _check(radius, phi2)
+    return 2.0 * phi2 / (np.pi * (1.0 - phi2) * radius)
+
+
+def lineal_path_void(z, radius: float, phi2: float) -> np.ndarray:
+    """Eq. (42): L(z) = phi1 exp(-2 phi2 z / (pi phi1 R))."""
+    z = np.asarray(z, dtype=float)
+    if np.any(z < 0):
+        raise ValueError("segment lengths must be >= 0")
+    return (1.0 - phi2) * np.exp(-chord_rate(radius, phi2) * z)
+
+
+def chord_density_void(z, radius: float, phi2: float) -> np.ndarray:
+    """Eq. (43): p(z) = (2 phi2 / (pi phi1 R)) exp(-2 phi2 z / (pi phi1 R))."""
+    z = np.asarray(z, dtype=float)
+    if np.any(z < 0):
+        raise ValueError("chord lengths must be >= 0")
+    rate = chord_rate(radius, phi2)
+    return rate * np.exp(-rate * z)
