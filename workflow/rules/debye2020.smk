@@ -255,9 +255,9 @@ LEVEL_SET_PORES = "results/debye2020/descriptors/{system}_pores.nc"
 SURFACE_PORE_FITS = "results/debye2020/fits/surface_pores.nc"
 DISKS_SYSTEM = f"overlapping_disks_phi{DISKS['phi2']:g}"
 COMPARISON_PHI2 = f"{DISKS['phi2']:g}"  # Sec. VI: all three models at this phi2
-# Equilibrium hard disks come from the hard-particles part (debye2020_hard_disks.smk):
+# Equilibrium hard disks come from debye2020_hard_disks.smk (included before this file):
 # HARD_DISKS_SAMPLES, a list of results/debye2020/hard_disks/phi0.3/sample{k}.nc.
-HARD_DISKS_READY = "HARD_DISKS_SAMPLES" in globals()
+HARD_DISKS_SYSTEM = "hard_disks_" + Path(HARD_DISKS_SAMPLES[0]).parent.name
 
 LEVEL_SET_SYSTEMS = {
     f"media_phi{name}": {
@@ -270,12 +270,10 @@ LEVEL_SET_SYSTEMS[DISKS_SYSTEM] = {
     "samples": expand(f"{DISKS_DIR}/sample{{k}}.nc", k=range(DISKS["n_samples"])),
     "target": {"model": "overlapping_disks", "phi2": DISKS["phi2"], "radius": DISKS["radius"]},
 }
-if HARD_DISKS_READY:
-    HARD_DISKS_SYSTEM = "hard_disks_" + Path(HARD_DISKS_SAMPLES[0]).parent.name
-    LEVEL_SET_SYSTEMS[HARD_DISKS_SYSTEM] = {
-        "samples": list(HARD_DISKS_SAMPLES),
-        "target": {"model": "hard_disks"},  # radius, phi2 from the files' attributes
-    }
+LEVEL_SET_SYSTEMS[HARD_DISKS_SYSTEM] = {
+    "samples": list(HARD_DISKS_SAMPLES),
+    "target": {"model": "hard_disks"},  # radius, phi2 from the files' attributes
+}
 
 
 def level_set_files(system):
@@ -333,8 +331,8 @@ rule debye2020_fit_surface_pores:
 
 
 def comparison_models():
-    """The Sec. VI comparison systems whose level sets exist in this build."""
-    return [DISKS_SYSTEM] + ([HARD_DISKS_SYSTEM] if HARD_DISKS_READY else [])
+    """The Sec. VI comparison systems (overlapping and equilibrium hard disks)."""
+    return [DISKS_SYSTEM, HARD_DISKS_SYSTEM]
 
 
 rule debye2020_numbers:
@@ -346,7 +344,7 @@ rule debye2020_numbers:
         models_surface=[level_set_files(name)["surface"] for name in comparison_models()],
         models_pores=[level_set_files(name)["pores"] for name in comparison_models()],
         code=package_sources("compare/debye2020.py", "theory/overlapping.py",
-                             *(["theory/scaled_particle.py"] if HARD_DISKS_READY else [])),
+                             "theory/scaled_particle.py"),
     output:
         "results/debye2020/tables/numbers.csv",
     log:
@@ -365,6 +363,7 @@ rule debye2020_comparison:
         fits=LINEAL_FITS,
         media_s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
         surface_pore_fits=SURFACE_PORE_FITS,
+        hard_disks_validation=HARD_DISKS_TARGETS[3],
         quoted="config/reference/debye2020_quoted_numbers.csv",
         code=package_sources("compare/__init__.py", "compare/debye2020.py", "theory/overlapping.py"),
     output:
@@ -372,8 +371,7 @@ rule debye2020_comparison:
     params:
         overlapping_disks=DISKS,
         media={key: MEDIA[key] for key in ("a", "lc", "L", "phi2", "n_samples")},
-        hard_disks_phi2=(float(Path(HARD_DISKS_SAMPLES[0]).parent.name.removeprefix("phi"))
-                         if HARD_DISKS_READY else None),
+        hard_disks_phi2=HARD_DISKS["phi2"],
         compare_r_max=DISKS["compare_r_max_over_R"] * DISKS["radius"],
         formula_r_min=FITS["formula_r_min"],
         k_sigma=config["comparison"]["k_sigma"],
@@ -448,12 +446,12 @@ rule debye2020_fig05:
 rule debye2020_fig08:
     """Fig. 8: one image of overlapping disks and one of equilibrium hard disks."""
     input:
-        samples=[f"{DISKS_DIR}/sample0.nc"] + ([HARD_DISKS_SAMPLES[0]] if HARD_DISKS_READY else []),
+        samples=[f"{DISKS_DIR}/sample0.nc", HARD_DISKS_SAMPLES[0]],
         code=package_sources("plot/style.py", "plot/debye2020.py"),
     output:
         **figure_outputs(8),
     params:
-        titles=["overlapping disks"] + (["equilibrium hard disks"] if HARD_DISKS_READY else []),
+        titles=["overlapping disks", "equilibrium hard disks"],
     log:
         "results/debye2020/logs/fig08.log",
     script:
@@ -471,17 +469,13 @@ def section6_inputs(number):
     else:
         files = {"media_chords": MEDIA_CHORDS.format(phi2=COMPARISON_PHI2),
                  "disks_chords": DISKS_CHORDS}
-    if HARD_DISKS_READY:
-        hard = level_set_files(HARD_DISKS_SYSTEM)
-        files["hard_surface"] = hard["surface"]
-        if number == 10:
-            files["hard_pores"] = hard["pores"]
-    code = ["plot/style.py", "plot/debye2020.py", "theory/debye.py", "theory/debye_formulas.py",
-            "theory/overlapping.py",
-            "theory/hard_disks.py"]
-    if HARD_DISKS_READY:
-        code.append("theory/scaled_particle.py")
-    files["code"] = package_sources(*code)
+    hard = level_set_files(HARD_DISKS_SYSTEM)
+    files["hard_surface"] = hard["surface"]
+    if number == 10:
+        files["hard_pores"] = hard["pores"]
+    files["code"] = package_sources("plot/style.py", "plot/debye2020.py", "theory/debye.py",
+                                    "theory/debye_formulas.py", "theory/overlapping.py",
+                                    "theory/hard_disks.py", "theory/scaled_particle.py")
     return files
 
 
@@ -565,7 +559,7 @@ rule debye2020_overlapping_disks_level_set_figure:
         "../scripts/debye2020/validation_level_set.py"
 
 
-DEBYE2020_TARGETS = [
+DEBYE2020_TARGETS = HARD_DISKS_TARGETS + [
     "results/debye2020/comparison.csv",
     "results/debye2020/tables/numbers.csv",
     DISKS_FIGURE,

@@ -261,7 +261,7 @@ def _quoted(reference) -> dict:
     return dict(zip(reference["quantity"], reference["value"]))
 
 
-def parameter_rows(reference, media: dict, overlapping_disks: dict, hard_disks_phi2=None) -> list[dict]:
+def parameter_rows(reference, media: dict, overlapping_disks: dict, hard_disks_phi2: float) -> list[dict]:
     """The quoted parameters against the configured ones: a, l_c, L, each phi2, the number of
     constructions per phi2, the comparison volume fraction (overlapping and hard disks).
     Tolerance 0: a row passes exactly when the config is the paper's."""
@@ -282,7 +282,7 @@ def parameter_rows(reference, media: dict, overlapping_disks: dict, hard_disks_p
                         ours=float(overlapping_disks["phi2"]), ours_sem=0.0, k_sigma=1.0))
     rows.append(compare(quantity="comparison_phi2", key="equilibrium hard disks",
                         published=float(quoted["comparison_phi2"]),
-                        ours=float("nan") if hard_disks_phi2 is None else float(hard_disks_phi2),
+                        ours=float(hard_disks_phi2),
                         ours_sem=0.0, k_sigma=1.0))
     return rows
 

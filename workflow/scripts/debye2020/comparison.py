@@ -3,7 +3,7 @@ from randmedia.jobs import start_job
 
 log = start_job(snakemake)  # noqa: F821
 
-from randmedia.compare import comparison_frame, read_reference  # noqa: E402
+from randmedia.compare import COLUMNS, comparison_frame, read_reference  # noqa: E402
 from randmedia.compare.debye2020 import (construction_rows, lineal_size_rows,  # noqa: E402
                                          overlapping_disks_chord_rows, overlapping_disks_pore_rows,
                                          overlapping_disks_s2_rows, overlapping_disks_surface_rows,
@@ -47,6 +47,8 @@ rows += construction_rows(reference, media_s2, k_sigma=k_sigma)
 fits = read_dataset(inputs.surface_pore_fits,
                     attrs=["percolation_crossing", "percolation_crossing_err", "percolation_bracket"])
 rows += surface_pore_rows(reference, fits, a=params["media"]["a"], k_sigma=k_sigma)
+# equilibrium hard disks: contact-value pressure against the 2D equation of state, decorrelation
+rows += read_reference(inputs.hard_disks_validation, COLUMNS).to_dict("records")
 frame = comparison_frame(rows)
 log.info("%d rows, %d passed", len(frame), int(frame["passed"].sum()))
 for _, row in frame[~frame["passed"]].iterrows():
