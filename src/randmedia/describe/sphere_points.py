@@ -215,7 +215,7 @@ def axis_count_variance(axis_counts: np.ndarray, n_blocks: int):
 # --------------------------------------------------------------------------- pair statistics
 
 
-@njit(cache=True, parallel=True, fastmath=True)
+@njit(cache=True, parallel=True)
 def _pair_histogram(points, n_points, radius, bin_width, n_bins, out):
     """out[f, b]: ordered pairs of frame f at geodesic distance in bin b. Work is split into
     (frame, row-chunk) jobs so that one large frame also runs in parallel."""

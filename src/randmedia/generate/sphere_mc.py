@@ -131,7 +131,7 @@ def particle_number(radius: float, density: float) -> int:
 # --------------------------------------------------------------------------- kernels
 
 
-@njit(cache=True, fastmath=True, inline="always", error_model="numpy")
+@njit(cache=True, inline="always", error_model="numpy")
 def _pair(r2, lj4, c1, c2, c3):
     inv2 = 1.0 / r2
     inv6 = inv2 * inv2 * inv2
@@ -139,25 +139,39 @@ def _pair(r2, lj4, c1, c2, c3):
     return lj4 * inv6 * (inv6 - 1.0) + inv1 * (c1 + inv1 * (c2 + inv1 * c3))
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
-def _delta_energy(x, y, z, i, nx, ny, nz, lj4, c1, c2, c3):
-    """U(new position of i) - U(old position of i), summed over all j != i."""
+@njit(cache=True, error_model="numpy")
+def _delta_energy(x, y, z, i, nx, ny, nz, lj4, c1, c2, c3, scratch):
+    """U(new position of i) - U(old position of i), summed over all j != i.
+
+    Two passes, both deterministic without fastmath: the pair-energy changes of all j go
+    elementwise into ``scratch`` (a loop with no reduction, which LLVM vectorizes with exact
+    IEEE sqrt/division), then they are added in a fixed order by four independent
+    accumulators (j mod 4 lanes, combined as (a0 + a1) + (a2 + a3)). Every run and every
+    compilation adds the same numbers in the same order, so energies are bit-identical
+    (fastmath reassociation made them depend on inlining and the cache)."""
     ox, oy, oz = x[i], y[i], z[i]
-    delta = 0.0
-    for j in range(i):
+    n = x.size
+    for j in range(n):
         dxn, dyn, dzn = x[j] - nx, y[j] - ny, z[j] - nz
         dxo, dyo, dzo = x[j] - ox, y[j] - oy, z[j] - oz
-        delta += (_pair(dxn * dxn + dyn * dyn + dzn * dzn, lj4, c1, c2, c3)
-                  - _pair(dxo * dxo + dyo * dyo + dzo * dzo, lj4, c1, c2, c3))
-    for j in range(i + 1, x.size):
-        dxn, dyn, dzn = x[j] - nx, y[j] - ny, z[j] - nz
-        dxo, dyo, dzo = x[j] - ox, y[j] - oy, z[j] - oz
-        delta += (_pair(dxn * dxn + dyn * dyn + dzn * dzn, lj4, c1, c2, c3)
-                  - _pair(dxo * dxo + dyo * dyo + dzo * dzo, lj4, c1, c2, c3))
-    return delta
+        scratch[j] = (_pair(dxn * dxn + dyn * dyn + dzn * dzn, lj4, c1, c2, c3)
+                      - _pair(dxo * dxo + dyo * dyo + dzo * dzo, lj4, c1, c2, c3))
+    scratch[i] = 0.0  # the self term (r = 0 in the old position) is not a pair
+    a0 = a1 = a2 = a3 = 0.0
+    j = 0
+    while j + 3 < n:
+        a0 += scratch[j]
+        a1 += scratch[j + 1]
+        a2 += scratch[j + 2]
+        a3 += scratch[j + 3]
+        j += 4
+    while j < n:
+        a0 += scratch[j]
+        j += 1
+    return (a0 + a1) + (a2 + a3)
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def _total_energy(x, y, z, lj4, c1, c2, c3):
     total = 0.0
     for i in range(x.size):
@@ -195,7 +209,7 @@ def _axis_cap_counts(x, y, z, radius, cos_thresholds, out):
             out[k, c] = running
 
 
-@njit(cache=True, fastmath=True, error_model="numpy")
+@njit(cache=True, error_model="numpy")
 def _sweeps(x, y, z, radius, beta, lj4, c1, c2, c3, step, n_sweeps, rng, tune,
             target_acceptance, energy, energies, acceptances, cos_thresholds, counts,
             first_count, count_every):
@@ -204,6 +218,7 @@ def _sweeps(x, y, z, radius, beta, lj4, c1, c2, c3, step, n_sweeps, rng, tune,
     sweeps s = first_count + m * count_every into counts[m] (m < counts.shape[0]).
     With ``tune`` the step is adapted after each sweep. Returns (energy, step, accepted)."""
     n = x.size
+    scratch = np.empty(n)
     accepted_total = 0
     max_step = math.pi * radius
     window_accepted = 0
@@ -230,7 +245,7 @@ def _sweeps(x, y, z, radius, beta, lj4, c1, c2, c3, step, n_sweeps, rng, tune,
             qx, qy, qz = ca * px + sa * tx, ca * py + sa * ty, ca * pz + sa * tz
             norm = radius / math.sqrt(qx * qx + qy * qy + qz * qz)
             qx, qy, qz = qx * norm, qy * norm, qz * norm
-            d_energy = _delta_energy(x, y, z, i, qx, qy, qz, lj4, c1, c2, c3)
+            d_energy = _delta_energy(x, y, z, i, qx, qy, qz, lj4, c1, c2, c3, scratch)
             if d_energy > 0.0:
                 if rng.random() >= math.exp(-beta * d_energy):
                     continue
@@ -269,7 +284,7 @@ def delta_energy(positions: np.ndarray, i: int, new: np.ndarray, potential: Pote
     lj4, c1, c2, c3 = potential.coefficients(radius)
     x, y, z = (np.ascontiguousarray(positions[:, k], dtype=np.float64) for k in range(3))
     return float(_delta_energy(x, y, z, int(i), float(new[0]), float(new[1]), float(new[2]),
-                               lj4, c1, c2, c3))
+                               lj4, c1, c2, c3, np.empty(x.size)))
 
 
 # --------------------------------------------------------------------------- driver
