@@ -88,3 +88,19 @@ def bad_config(mutation) -> dict:
     config = copy.deepcopy(quick_config())
     mutation(config)
     return config
+
+
+MRJ = ("mrj2016",)
+
+# mrj2016: overlapping spheres, lattices, descriptors (Klatt & Torquato 2016)
+BAD_CONFIGS += [
+    ("mrj_overlapping_phi_one", _set(MRJ + ("overlapping", "phi"), 1.0), "mrj2016.overlapping.phi"),
+    ("mrj_fcc_cells_one", _set(MRJ + ("lattices", "fcc_cells"), 1), "mrj2016.lattices.fcc_cells"),
+    ("mrj_r_step_not_dividing_table", _set(MRJ + ("descriptors", "r_step"), 0.007), "mrj2016.descriptors.r_step"),
+    ("mrj_pore_bin_not_dividing_radius", _set(MRJ + ("pores", "bin_width"), 0.003), "mrj2016.pores.bin_width"),
+    ("mrj_spectral_bin_beyond_k_max", _set(MRJ + ("spectral", "bin_width"), 25.0), "mrj2016.spectral.bin_width"),
+    ("mrj_phi_B_zero", _set(MRJ + ("number_variance", "phi_B"), 0.0), "mrj2016.number_variance.phi_B"),
+    ("mrj_window_step_beyond_box", _set(MRJ + ("number_variance", "radius_step"), 4.0),
+     "mrj2016.number_variance.radius_step"),
+    ("mrj_missing_pores", _delete(MRJ + ("pores",)), "mrj2016.pores"),
+]
