@@ -78,6 +78,27 @@ BAD_CONFIGS = [
     ("section_not_mapping", _set(("debye2020",), [1, 2]), "debye2020"),
 ]
 
+# equilibrium hard disks (debye2020.hard_disks) and the hard-sphere liquid (mrj2016.equilibrium)
+HARD_DISKS = ("debye2020", "hard_disks")
+LIQUID = ("mrj2016", "equilibrium")
+BAD_CONFIGS += [
+    ("hard_disks_phi2_above_fluid_branch", _set(HARD_DISKS + ("phi2",), 0.75),
+     "debye2020.hard_disks.phi2"),
+    ("hard_disks_radius_vs_L", _set(HARD_DISKS + ("radius",), 40.0), "debye2020.hard_disks.radius"),
+    ("hard_disks_radius_negative", _set(HARD_DISKS + ("radius",), -6.0),
+     "debye2020.hard_disks.radius"),
+    ("hard_disks_one_sample", lambda c: c["debye2020"]["hard_disks"].update(
+        n_chains=1, samples_per_chain=1), "debye2020.hard_disks.samples_per_chain"),
+    ("hard_disks_sample_msd_below_one", _set(HARD_DISKS + ("mc", "sample_msd"), 0.5),
+     "debye2020.hard_disks.mc.sample_msd"),
+    ("liquid_phi_above_freezing", _set(LIQUID + ("phi",), 0.55), "mrj2016.equilibrium.phi"),
+    ("liquid_too_few_particles", _set(LIQUID + ("n_particles",), 20),
+     "mrj2016.equilibrium.n_particles"),
+    ("liquid_contact_bins_vs_order", _set(LIQUID + ("mc", "contact_bins"), 4),
+     "mrj2016.equilibrium.mc.contact_bins"),
+    ("liquid_unknown_eos", _set(LIQUID + ("eos",), "percus_yevick"), "mrj2016.equilibrium.eos"),
+]
+
 
 def quick_config() -> dict:
     with open(QUICK) as handle:

@@ -141,17 +141,66 @@ def _debye2020_checks(section: dict, config: dict) -> list[str]:
     return problems
 
 
+def _hard_particle_mc_checks(prefix: str, section: dict) -> list[str]:
+    """Constraints inside the shared Monte Carlo settings (``<section>.mc``)."""
+    mc = section["mc"]
+    problems = []
+    if mc["contact_bins"] < mc["contact_order"] + 2:
+        problems.append(
+            f"config key '{prefix}.mc.contact_bins': {mc['contact_bins']} bins cannot fit a "
+            f"degree-{mc['contact_order']} polynomial with a residual (need >= contact_order + 2)")
+    if section["n_chains"] * section["samples_per_chain"] < 2:
+        problems.append(
+            f"config key '{prefix}.samples_per_chain': n_chains x samples_per_chain = "
+            f"{section['n_chains'] * section['samples_per_chain']}; at least 2 samples are needed "
+            "for a standard error")
+    return problems
+
+
 def _debye2020_hard_disks_checks(section: dict, config: dict) -> list[str]:
-    """debye2020.hard_disks (equilibrium hard disks, Sec. VI B)."""
-    return []
+    """debye2020.hard_disks (equilibrium hard disks, Sec. VI B): the disks must fit the
+    image (N >= 2, box >= 2 D (1 + contact_range) + D) and stay on the fluid branch."""
+    import math
+
+    prefix = "debye2020.hard_disks"
+    problems = _hard_particle_mc_checks(prefix, section)
+    side, radius, phi2 = section["L"], section["radius"], section["phi2"]
+    n = round(phi2 * side * side / (math.pi * radius * radius))
+    if n < 2:
+        problems.append(
+            f"config key '{prefix}.radius': R = {radius:g} px leaves N = round(phi2 L^2 / (pi R^2)) "
+            f"= {n} disks on {side}^2 pixels; need N >= 2 (smaller radius or larger L)")
+    shortest = 2 * radius * (2 * (1 + section["mc"]["contact_range"]) + 1)
+    if side < shortest:
+        problems.append(
+            f"config key '{prefix}.radius': the image side L = {side} must be >= "
+            f"2 R (2 (1 + mc.contact_range) + 1) = {shortest:g} pixels (the contact shell must "
+            "fit half the periodic box)")
+    realized = n * math.pi * radius * radius / (side * side)
+    if n >= 2 and realized > 0.700:
+        problems.append(
+            f"config key '{prefix}.phi2': N = {n} disks give a disk fraction {realized:.4f} above "
+            "0.700, the end of the stable fluid branch of hard disks")
+    return problems
 
 
 # --------------------------------------------------------------------------- mrj2016
 
 
 def _mrj2016_equilibrium_checks(section: dict, config: dict) -> list[str]:
-    """mrj2016.equilibrium (hard-sphere liquid)."""
-    return []
+    """mrj2016.equilibrium (hard-sphere liquid): the cube must hold the contact shell."""
+    import math
+
+    prefix = "mrj2016.equilibrium"
+    problems = _hard_particle_mc_checks(prefix, section)
+    side = (section["n_particles"] * math.pi / (6.0 * section["phi"])) ** (1.0 / 3.0)
+    shortest = 2 * (1 + section["mc"]["contact_range"]) + 1
+    if side < shortest:
+        problems.append(
+            f"config key '{prefix}.n_particles': N = {section['n_particles']} spheres at phi = "
+            f"{section['phi']:g} fill a cube of side {side:.3g} D, shorter than "
+            f"2 (1 + mc.contact_range) + 1 = {shortest:g} D (the contact shell must fit half the box)")
+    return problems
 
 
 def _mrj2016_jammed_checks(section: dict, config: dict) -> list[str]:

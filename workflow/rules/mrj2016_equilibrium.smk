@@ -1,3 +1,84 @@
 # Klatt & Torquato, PRE 94, 022152 (2016): the equilibrium hard-sphere liquid
 # at phi = 0.478 (system `equilibrium`) by NVT Monte Carlo
 # (randmedia.generate.hard_spheres, d-generic). Included before mrj2016.smk.
+#
+# Names for the other rule files:
+#   MRJ2016_EQUILIBRIUM  the config section mrj2016.equilibrium
+#   EQUILIBRIUM_SAMPLES  every sample: results/mrj2016/configs/equilibrium/sample{k}.nc
+#                        (PARTICLE_CONFIG: position, box in units of D = 1; attr diameter)
+#   EQUILIBRIUM_TARGETS  validation: contact-value pressure vs the EOS, Q6, decorrelation
+# One job per Markov chain writes that chain's samples k = chain * samples_per_chain + j
+# (one rule per chain: mrj2016_equilibrium_chain{c}); it checkpoints beside them.
+
+MRJ2016_EQUILIBRIUM = config["mrj2016"]["equilibrium"]
+EQUILIBRIUM_DIR = "results/mrj2016/configs/equilibrium"
+EQUILIBRIUM_PER_CHAIN = MRJ2016_EQUILIBRIUM["samples_per_chain"]
+EQUILIBRIUM_SAMPLES = [
+    f"{EQUILIBRIUM_DIR}/sample{k}.nc"
+    for k in range(MRJ2016_EQUILIBRIUM["n_chains"] * EQUILIBRIUM_PER_CHAIN)
+]
+EQUILIBRIUM_VALIDATION = "results/mrj2016/validation/equilibrium"
+EQUILIBRIUM_TARGETS = [
+    f"{EQUILIBRIUM_VALIDATION}_eos.pdf",
+    f"{EQUILIBRIUM_VALIDATION}_eos.png",
+    f"{EQUILIBRIUM_VALIDATION}_diagnostics.csv",
+    f"{EQUILIBRIUM_VALIDATION}_comparison.csv",
+]
+
+for _chain in range(MRJ2016_EQUILIBRIUM["n_chains"]):
+
+    rule:
+        name:
+            f"mrj2016_equilibrium_chain{_chain}"
+        input:
+            package_sources("generate/hard_spheres.py", "generate/__init__.py",
+                            "theory/hard_spheres.py", "describe/bond_order.py", "periodic.py",
+                            "seeding.py"),
+        output:
+            EQUILIBRIUM_SAMPLES[_chain * EQUILIBRIUM_PER_CHAIN:(_chain + 1) * EQUILIBRIUM_PER_CHAIN],
+        params:
+            chain=_chain,
+            phi=MRJ2016_EQUILIBRIUM["phi"],
+            n_particles=MRJ2016_EQUILIBRIUM["n_particles"],
+            samples_per_chain=EQUILIBRIUM_PER_CHAIN,
+            eos=MRJ2016_EQUILIBRIUM["eos"],
+            mc=MRJ2016_EQUILIBRIUM["mc"],
+            checkpoint_seconds=MRJ2016_EQUILIBRIUM["checkpoint_seconds"],
+            seed=config["seed"],
+        log:
+            f"results/mrj2016/logs/equilibrium_chain{_chain}.log",
+        threads: 1
+        resources:
+            mem_mb=1000,
+        script:
+            "../scripts/mrj2016/equilibrium_chain.py"
+
+
+rule mrj2016_equilibrium_validation:
+    """Contact-value pressure of the liquid against the EOS; per-sample diagnostics
+    (acceptance, MSD between samples, global Q6, crystal-like fraction)."""
+    input:
+        samples=EQUILIBRIUM_SAMPLES,
+        code=package_sources("compare/hard_particles.py", "plot/hard_particles.py",
+                             "plot/style.py", "theory/hard_spheres.py", "generate/hard_spheres.py"),
+    output:
+        pdf=EQUILIBRIUM_TARGETS[0],
+        png=EQUILIBRIUM_TARGETS[1],
+        diagnostics=EQUILIBRIUM_TARGETS[2],
+        comparison=EQUILIBRIUM_TARGETS[3],
+    params:
+        phi=MRJ2016_EQUILIBRIUM["phi"],
+        eos=MRJ2016_EQUILIBRIUM["eos"],
+        mc=MRJ2016_EQUILIBRIUM["mc"],
+        k_sigma=config["comparison"]["k_sigma"],
+    log:
+        "results/mrj2016/logs/equilibrium_validation.log",
+    script:
+        "../scripts/mrj2016/equilibrium_validation.py"
+
+
+rule mrj2016_equilibrium:
+    """Every sample of the equilibrium hard-sphere liquid and its validation."""
+    input:
+        EQUILIBRIUM_SAMPLES,
+        EQUILIBRIUM_TARGETS,
