@@ -110,18 +110,35 @@ def bad_config(mutation) -> dict:
     mutation(config)
     return config
 
-
-MRJ = ("mrj2016",)
+MRJ2016 = ("mrj2016",)
 
 # mrj2016: overlapping spheres, lattices, descriptors (Klatt & Torquato 2016)
 BAD_CONFIGS += [
-    ("mrj_overlapping_phi_one", _set(MRJ + ("overlapping", "phi"), 1.0), "mrj2016.overlapping.phi"),
-    ("mrj_fcc_cells_one", _set(MRJ + ("lattices", "fcc_cells"), 1), "mrj2016.lattices.fcc_cells"),
-    ("mrj_r_step_not_dividing_table", _set(MRJ + ("descriptors", "r_step"), 0.007), "mrj2016.descriptors.r_step"),
-    ("mrj_pore_bin_not_dividing_radius", _set(MRJ + ("pores", "bin_width"), 0.003), "mrj2016.pores.bin_width"),
-    ("mrj_spectral_bin_beyond_k_max", _set(MRJ + ("spectral", "bin_width"), 25.0), "mrj2016.spectral.bin_width"),
-    ("mrj_phi_B_zero", _set(MRJ + ("number_variance", "phi_B"), 0.0), "mrj2016.number_variance.phi_B"),
-    ("mrj_window_step_beyond_box", _set(MRJ + ("number_variance", "radius_step"), 4.0),
+    ("mrj_overlapping_phi_one", _set(MRJ2016 + ("overlapping", "phi"), 1.0), "mrj2016.overlapping.phi"),
+    ("mrj_fcc_cells_one", _set(MRJ2016 + ("lattices", "fcc_cells"), 1), "mrj2016.lattices.fcc_cells"),
+    ("mrj_r_step_not_dividing_table", _set(MRJ2016 + ("descriptors", "r_step"), 0.007), "mrj2016.descriptors.r_step"),
+    ("mrj_pore_bin_not_dividing_radius", _set(MRJ2016 + ("pores", "bin_width"), 0.003), "mrj2016.pores.bin_width"),
+    ("mrj_spectral_bin_beyond_k_max", _set(MRJ2016 + ("spectral", "bin_width"), 25.0), "mrj2016.spectral.bin_width"),
+    ("mrj_phi_B_zero", _set(MRJ2016 + ("number_variance", "phi_B"), 0.0), "mrj2016.number_variance.phi_B"),
+    ("mrj_window_step_beyond_box", _set(MRJ2016 + ("number_variance", "radius_step"), 4.0),
      "mrj2016.number_variance.radius_step"),
-    ("mrj_missing_pores", _delete(MRJ + ("pores",)), "mrj2016.pores"),
+    ("mrj_missing_pores", _delete(MRJ2016 + ("pores",)), "mrj2016.pores"),
+]
+
+MRJ = ("mrj2016", "mrj")
+BAD_CONFIGS += [
+    ("mrj_n_particles_small", _set(MRJ + ("mrj", "n_particles"), 20), "mrj2016.mrj.mrj.n_particles"),
+    ("mrj_n_particles_cell", lambda c: (c["mrj2016"]["mrj"]["mrj_large"].update(n_particles=60),
+                                        c["mrj2016"]["mrj"]["tj"].update(influence_gap=0.6)),
+     "mrj2016.mrj.mrj_large.n_particles"),
+    ("mrj_n_samples_zero", _set(MRJ + ("mrj", "n_samples"), 0), "mrj2016.mrj.mrj.n_samples"),
+    ("mrj_initial_phi_high", _set(MRJ + ("initial_phi",), 0.5), "mrj2016.mrj.initial_phi"),
+    ("mrj_influence_gap_vs_strain", lambda c: c["mrj2016"]["mrj"]["tj"].update(
+        influence_gap=0.02, max_normal_strain=0.01, max_shear_strain=0.01),
+     "mrj2016.mrj.tj.influence_gap"),
+    ("mrj_backend_unknown", _set(MRJ + ("tj", "backend"), "glpk"), "mrj2016.mrj.tj.backend"),
+    ("mrj_tolerance_zero", _set(MRJ + ("tj", "tolerance"), 0.0), "mrj2016.mrj.tj.tolerance"),
+    ("mrj_gap_tolerance_big", _set(MRJ + ("contacts", "gap_tolerance"), 0.01),
+     "mrj2016.mrj.contacts.gap_tolerance"),
+    ("mrj_unknown_key", _set(MRJ + ("n_particles",), 2000), "mrj2016.mrj.n_particles"),
 ]

@@ -204,8 +204,30 @@ def _mrj2016_equilibrium_checks(section: dict, config: dict) -> list[str]:
 
 
 def _mrj2016_jammed_checks(section: dict, config: dict) -> list[str]:
-    """mrj2016.mrj (Torquato-Jiao MRJ packings)."""
-    return []
+    """mrj2016.mrj (Torquato-Jiao MRJ packings): the influence sphere must fit in the
+    cell, and the strain bounds must leave room for a translation bound."""
+    import math
+
+    problems = []
+    tj = section["tj"]
+    reach = 1 + tj["influence_gap"]
+    for system in ("mrj", "mrj_large"):
+        n = section[system]["n_particles"]
+        # half the side of a cubic cell at phi = 0.64, with 20 % margin for the cell's shear
+        half_width = 0.8 * 0.5 * (n * math.pi / 6 / 0.64) ** (1 / 3)
+        if reach > half_width:
+            problems.append(
+                f"config key 'mrj2016.mrj.{system}.n_particles': {n} spheres give a jammed cell "
+                f"too small for the influence sphere D(1 + influence_gap) = {reach:g} D (must be "
+                f"< {half_width:.3g} D, 0.8 x half the cell side); use more spheres or a smaller "
+                "mrj2016.mrj.tj.influence_gap")
+    strain = tj["max_normal_strain"] + 2 * tj["max_shear_strain"]
+    if reach * (1 - strain) <= 1:
+        problems.append(
+            "config key 'mrj2016.mrj.tj.influence_gap': (1 + influence_gap)(1 - max_normal_strain "
+            f"- 2 max_shear_strain) = {reach * (1 - strain):.4g} must be > 1, or no translation "
+            "keeps pairs beyond the influence sphere apart")
+    return problems
 
 
 def _is_multiple(value: float, step: float) -> bool:

@@ -1,3 +1,67 @@
 # Klatt & Torquato, PRE 94, 022152 (2016): MRJ packings by the Torquato-Jiao
 # sequential linear programming algorithm (systems `mrj` and `mrj_large`).
 # Included before mrj2016.smk.
+#
+# Python names other rule files use:
+#   MRJ_JAMMED         the config section mrj2016.mrj
+#   MRJ_SAMPLES        every results/mrj2016/configs/mrj/sample{k}.nc
+#   MRJ_LARGE_SAMPLES  every results/mrj2016/configs/mrj_large/sample{k}.nc
+#   JAMMED_TARGETS     packings.csv (phi, z, rattler fraction, Q6 per packing; mean, SEM)
+
+MRJ_JAMMED = config["mrj2016"]["mrj"]
+MRJ_PACKING = "results/mrj2016/configs/{system}/sample{k}.nc"
+MRJ_SAMPLES = expand(MRJ_PACKING, system="mrj", k=range(MRJ_JAMMED["mrj"]["n_samples"]))
+MRJ_LARGE_SAMPLES = expand(MRJ_PACKING, system="mrj_large",
+                           k=range(MRJ_JAMMED["mrj_large"]["n_samples"]))
+MRJ_PACKINGS_TABLE = "results/mrj2016/packings.csv"
+JAMMED_TARGETS = [MRJ_PACKINGS_TABLE]
+
+
+rule mrj2016_jammed_packing:
+    """One strictly jammed packing (TJ SLP from an RSA start, optionally after a fast
+    soft-sphere compression); checkpoints and resumes."""
+    input:
+        package_sources("generate/jammed.py", "generate/packing_lp.py", "generate/rsa.py",
+                        "generate/soft_spheres.py",
+                        "generate/__init__.py", "describe/jamming.py", "describe/bond_order.py",
+                        "periodic.py", "seeding.py"),
+    output:
+        MRJ_PACKING,
+    wildcard_constraints:
+        system="mrj|mrj_large",
+    params:
+        n_particles=lambda wildcards: MRJ_JAMMED[wildcards.system]["n_particles"],
+        precompress_phi=lambda wildcards: MRJ_JAMMED[wildcards.system]["precompress_phi"],
+        initial_phi=MRJ_JAMMED["initial_phi"],
+        tj=MRJ_JAMMED["tj"],
+        contacts=MRJ_JAMMED["contacts"],
+        bond_order_cutoff=MRJ_JAMMED["bond_order_cutoff"],
+        checkpoint_seconds=MRJ_JAMMED["checkpoint_seconds"],
+        seed=config["seed"],
+    log:
+        "results/mrj2016/logs/jammed_{system}_sample{k}.log",
+    threads: 1
+    resources:
+        mem_mb=lambda wildcards: 1000 + MRJ_JAMMED[wildcards.system]["n_particles"],
+    script:
+        "../scripts/mrj2016/jammed_packing.py"
+
+
+rule mrj2016_packings:
+    """packings.csv: phi, mean contact number, rattler fraction, Q6, crystal-like fraction,
+    jamming test and cost of every packing, with mean and SEM per system."""
+    input:
+        samples=MRJ_SAMPLES + MRJ_LARGE_SAMPLES,
+        code=package_sources("describe/jamming.py", "stats.py"),
+    output:
+        MRJ_PACKINGS_TABLE,
+    log:
+        "results/mrj2016/logs/packings.log",
+    script:
+        "../scripts/mrj2016/jammed_packings.py"
+
+
+rule mrj2016_jammed:
+    """Named target: every MRJ packing and their summary."""
+    input:
+        JAMMED_TARGETS,

@@ -1,0 +1,441 @@
+"""Strictly jammed sphere packings by the Torquato-Jiao sequential linear programming algorithm.
+
+S. Torquato and Y. Jiao, PRE 82, 061302 (2010) (TJ): the adaptive-shrinking-cell
+problem for spheres -- minimize the volume of a deformable periodic cell that
+holds n non-overlapping spheres of diameter D -- solved as a sequence of linear
+programs. Klatt & Torquato, PRE 94, 022152 (2016), analyse MRJ packings made
+this way (n = 2000, phi = 0.6356, z = 6.00; 14 packings of n = 10 000 in Table V).
+
+One TJ step (the LP is written out in :mod:`randmedia.generate.packing_lp`):
+
+1. list the pairs closer than the influence-sphere distance D (1 + delta);
+2. minimize Tr epsilon over the symmetric strain epsilon of the cell and the
+   Cartesian displacements u_i, subject to the linearized non-overlap
+   constraint of every listed pair and to the bounds
+   |epsilon_aa| <= ``max_normal_strain``, |epsilon_ab| <= ``max_shear_strain``,
+   |u_ia| <= Delta; the displacement of sphere 0 is fixed (it only removes the
+   free global translation);
+3. apply the exact update x_i <- (I + epsilon)(x_i + u_i), box <- (I + epsilon) box;
+4. remove the overlaps the linearization leaves by rescaling the whole packing
+   (positions and cell) by D / (smallest centre distance) -- TJ's "resize" --
+   so that the closest pair touches and nothing overlaps;
+5. reduce the cell basis (LLL, which keeps the lattice and only picks shorter,
+   more orthogonal lattice vectors) so the cell never becomes too thin for the
+   nearest-image pair search.
+
+Translation bound. Delta is chosen so that no pair outside the influence sphere
+can reach contact in one step: a pair at distance rho >= D (1 + delta) ends at
+distance >= (1 - ||epsilon||_2)(rho - 2 sqrt(d) Delta), and ||epsilon||_2 <=
+e_n + (d - 1) e_s (largest absolute row sum), so
+
+    Delta = translation_fraction * [D (1 + delta) - D / (1 - e_n - (d - 1) e_s)] / (2 sqrt(d)).
+
+Every overlap after a step therefore comes from the linearization alone
+(second order in the step), and the full overlap check of step 4 covers all
+pairs anyway.
+
+Convergence. The packing is converged when the packing fraction grew by less
+than ``tolerance`` (relative) over the last two LPs (TJ's criterion on the cell
+volume). Near jamming the LP solves the linearized problem of the contact
+network exactly, so the SLP converges quadratically: contacts close to
+~1e-14 D while the smallest non-contact gaps stay ~1e-6 D or larger.
+
+Start: random sequential addition at ``initial_phi``
+(:func:`randmedia.generate.rsa.random_sequential_addition`). The construction is
+deterministic given the start, so a run resumed from a checkpoint (saved at an LP
+boundary) reproduces the uninterrupted run bit for bit.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import logging
+import math
+import os
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from randmedia.generate import packing_lp
+from randmedia.generate.rsa import ball_volume
+from randmedia.io import atomic_output
+from randmedia.periodic import Cell, pairs_within
+
+#: densest packing fractions (hexagonal in 2D, fcc in 3D): no packing exceeds them
+MAX_PACKING_FRACTION = {2: math.pi / (2 * math.sqrt(3)), 3: math.pi / math.sqrt(18)}
+
+
+class ConstructionError(RuntimeError):
+    """The SLP did not converge within ``max_lps`` or produced an invalid packing."""
+
+
+@dataclass(frozen=True)
+class TJParameters:
+    """Constants of the Torquato-Jiao SLP (module docstring; lengths in units of D)."""
+
+    influence_gap: float = 0.25
+    max_normal_strain: float = 0.01
+    max_shear_strain: float = 0.01
+    translation_fraction: float = 1.0
+    tolerance: float = 1e-12
+    max_lps: int = 20000
+    backend: str = "highs-ipm"
+
+    def __post_init__(self):
+        checks = {
+            "influence_gap": 0 < self.influence_gap <= 2,
+            "max_normal_strain": 0 < self.max_normal_strain <= 0.1,
+            "max_shear_strain": 0 < self.max_shear_strain <= 0.1,
+            "translation_fraction": 0 < self.translation_fraction <= 1,
+            "tolerance": 0 < self.tolerance < 1e-3,
+            "max_lps": int(self.max_lps) == self.max_lps and self.max_lps >= 1,
+            "backend": self.backend in packing_lp.BACKENDS,
+        }
+        bad = [name for name, ok in checks.items() if not ok]
+        if bad:
+            raise ValueError(f"invalid Torquato-Jiao parameters: {bad} ({self})")
+
+    def translation_bound(self, dim: int, diameter: float = 1.0) -> float:
+        """Delta: the largest per-component displacement that keeps pairs beyond the
+        influence sphere apart in one step, times ``translation_fraction``."""
+        norm = self.max_normal_strain + (dim - 1) * self.max_shear_strain
+        if norm >= 1:
+            raise ValueError("strain bounds too large: e_n + (d - 1) e_s must be < 1")
+        reach = diameter * (1 + self.influence_gap) - diameter / (1 - norm)
+        if reach <= 0:
+            raise ValueError(
+                f"influence_gap {self.influence_gap} too small for the strain bounds "
+                f"(need (1 + delta)(1 - e_n - (d-1) e_s) > 1)")
+        return self.translation_fraction * reach / (2 * math.sqrt(dim))
+
+
+@dataclass
+class JammedPacking:
+    """A converged TJ packing and the record of its construction."""
+
+    positions: np.ndarray
+    box: np.ndarray
+    diameter: float
+    n_lp: int
+    seconds: float
+    lp_seconds: float
+    history: dict = field(default_factory=dict)  # per LP: phi, trace, rescale, rows, seconds
+    params: TJParameters = TJParameters()
+
+    @property
+    def phi(self) -> float:
+        return packing_fraction(self.positions, self.box, self.diameter)
+
+
+def packing_fraction(positions: np.ndarray, box: np.ndarray, diameter: float = 1.0) -> float:
+    positions = np.asarray(positions)
+    return positions.shape[0] * ball_volume(positions.shape[1], diameter) / abs(np.linalg.det(box))
+
+
+def validate_packing_input(n: int, phi: float, dim: int, diameter: float = 1.0) -> None:
+    """Refuse impossible packings: n < 2, non-positive sizes, phi above the densest packing."""
+    if dim not in MAX_PACKING_FRACTION:
+        raise ValueError(f"dimension must be 2 or 3, got {dim}")
+    if int(n) != n or n < 2:
+        raise ValueError(f"a packing needs at least 2 spheres, got n = {n}")
+    if not diameter > 0:
+        raise ValueError(f"sphere diameter must be > 0, got {diameter}")
+    if not 0 < phi <= MAX_PACKING_FRACTION[dim]:
+        raise ValueError(f"packing fraction {phi} impossible in {dim}D: must lie in "
+                         f"(0, {MAX_PACKING_FRACTION[dim]:.6f}] (densest packing)")
+
+
+# --------------------------------------------------------------------------- cell reduction
+
+
+def reduce_cell(box: np.ndarray, delta: float = 0.75) -> np.ndarray:
+    """LLL-reduced basis (columns) of the lattice spanned by the columns of ``box``.
+
+    Same lattice, same volume and orientation (det > 0); shorter, nearly orthogonal
+    vectors, which keeps the half width h_w of the cell close to its best value.
+    """
+    basis = np.array(box, dtype=float).T.copy()  # rows = lattice vectors
+    dim = basis.shape[0]
+
+    def gram_schmidt(b):
+        ortho = np.zeros_like(b)
+        mu = np.zeros((dim, dim))
+        for i in range(dim):
+            ortho[i] = b[i]
+            for j in range(i):
+                mu[i, j] = b[i] @ ortho[j] / (ortho[j] @ ortho[j])
+                ortho[i] = ortho[i] - mu[i, j] * ortho[j]
+        return ortho, mu
+
+    k = 1
+    for _ in range(1000):
+        if k >= dim:
+            break
+        for j in range(k - 1, -1, -1):
+            _, mu = gram_schmidt(basis)
+            q = round(mu[k, j])
+            if q:
+                basis[k] -= q * basis[j]
+        ortho, mu = gram_schmidt(basis)
+        if ortho[k] @ ortho[k] >= (delta - mu[k, k - 1] ** 2) * (ortho[k - 1] @ ortho[k - 1]):
+            k += 1
+        else:
+            basis[[k, k - 1]] = basis[[k - 1, k]]
+            k = max(k - 1, 1)
+    reduced = basis.T
+    if np.linalg.det(reduced) < 0:
+        reduced[:, 0] = -reduced[:, 0]
+    return reduced
+
+
+# --------------------------------------------------------------------------- one step
+
+
+def _min_distance(cell: Cell, positions: np.ndarray, cutoff: float) -> float:
+    _, _, _, distance = pairs_within(cell, positions, cutoff)
+    return float(distance.min()) if distance.size else np.inf
+
+
+def remove_overlaps(positions: np.ndarray, box: np.ndarray, diameter: float):
+    """Rescale positions and cell by D / (smallest centre distance) if that is < D.
+
+    Returns (positions, box, factor); afterwards no centre distance is below D
+    (the factor is nudged up by ulps until that holds in floating point).
+    """
+    cell = Cell(box)
+    closest = _min_distance(cell, positions, diameter)
+    if closest >= diameter:
+        return positions, box, 1.0
+    factor = diameter / closest
+    while True:
+        new_positions, new_box = positions * factor, box * factor
+        if _min_distance(Cell(new_box), new_positions, diameter) >= diameter:
+            return new_positions, new_box, factor
+        factor = np.nextafter(factor, np.inf)
+
+
+def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diameter: float = 1.0,
+            threads: int = 1):
+    """One LP of the TJ construction (steps 1-4 of the module docstring).
+
+    Returns (positions, box, record) with record = dict(trace, rescale, rows, seconds,
+    iterations).
+    """
+    n, dim = positions.shape
+    cell = Cell(box)
+    cutoff = diameter * (1 + params.influence_gap)
+    if cutoff > cell.half_width:
+        raise ConstructionError(
+            f"influence sphere D(1 + delta) = {cutoff:g} exceeds the cell half width "
+            f"{cell.half_width:g}: too few spheres ({n}) for this influence_gap")
+    i, j, separation, distance = pairs_within(cell, positions, cutoff)
+    matrix = packing_lp.constraint_matrix(n, i, j, separation, distance)
+    ns = packing_lp.n_strain(dim)
+    cost = np.zeros(ns + dim * n)
+    cost[:dim] = 1.0
+    delta = params.translation_bound(dim, diameter)
+    upper = np.full(ns + dim * n, delta)
+    upper[:dim] = params.max_normal_strain
+    upper[dim:ns] = params.max_shear_strain
+    upper[ns:ns + dim] = 0.0  # sphere 0 fixed: removes the free global translation
+    solution = packing_lp.solve(cost, matrix, packing_lp.gap_bound(distance, diameter), -upper,
+                                upper, backend=params.backend, threads=threads)
+    deformation = np.eye(dim) + packing_lp.strain_matrix(solution.x[:ns], dim)
+    moved = (positions + solution.x[ns:].reshape(n, dim)) @ deformation.T
+    new_box = deformation @ box
+    moved, new_box, factor = remove_overlaps(moved, new_box, diameter)
+    new_box = reduce_cell(new_box)
+    moved = Cell(new_box).wrap(moved)
+    record = {"trace": float(solution.x[:dim].sum()), "rescale": factor, "rows": len(i),
+              "seconds": solution.seconds, "iterations": solution.iterations}
+    return moved, new_box, record
+
+
+# --------------------------------------------------------------------------- the construction
+
+
+_HISTORY_KEYS = ("phi", "trace", "rescale", "rows", "seconds", "iterations")
+
+
+def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParameters(), *,
+        diameter: float = 1.0, checkpoint: str | os.PathLike | None = None,
+        checkpoint_seconds: float = 60.0, log: logging.Logger | None = None,
+        log_seconds: float = 15.0, threads: int = 1) -> JammedPacking:
+    """Compress a non-overlapping packing to a strictly jammed one by TJ steps.
+
+    ``checkpoint``: file the state is saved to (at LP boundaries, at most every
+    ``checkpoint_seconds``) and resumed from if it exists and belongs to the same
+    start and parameters; removed on success. Progress (LPs/s, phi, Tr epsilon,
+    ETA) goes to ``log`` every ``log_seconds``. Raises :class:`ConstructionError`
+    if not converged after ``params.max_lps`` LPs.
+    """
+    log = log or logging.getLogger(__name__)
+    positions = np.array(positions, dtype=float)
+    box = np.array(box, dtype=float)
+    n, dim = positions.shape
+    validate_packing_input(n, packing_fraction(positions, box, diameter), dim, diameter)
+    closest = _min_distance(Cell(box), positions, diameter)
+    if closest < diameter * (1 - 1e-12):
+        raise ValueError(f"the start packing overlaps: closest centre distance {closest:.6g} < D = "
+                         f"{diameter:g}")
+    key = _checkpoint_key(positions, box, params, diameter)
+    history = {name: [] for name in _HISTORY_KEYS}
+    elapsed_before = 0.0
+    state = _load_checkpoint(checkpoint, key, log) if checkpoint is not None else None
+    if state is not None:  # saved at an LP boundary, exactly as the step left it
+        positions, box, history, elapsed_before = state
+    else:
+        box = reduce_cell(box)
+        positions = Cell(box).wrap(positions)
+    started = last_save = last_log = time.perf_counter()
+    window_start = (len(history["phi"]), started)
+    while True:
+        phis = history["phi"]
+        if len(phis) >= 3 and (phis[-1] - phis[-3]) <= params.tolerance * phis[-1]:
+            break
+        if len(phis) >= params.max_lps:
+            raise ConstructionError(
+                f"TJ did not converge within max_lps = {params.max_lps} LPs (phi = {phis[-1]:.6f}, "
+                f"last relative change {(phis[-1] - phis[-3]) / phis[-1]:.3g} > tolerance "
+                f"{params.tolerance:g})")
+        positions, box, record = tj_step(positions, box, params, diameter, threads)
+        record["phi"] = packing_fraction(positions, box, diameter)
+        for name in _HISTORY_KEYS:
+            history[name].append(record[name])
+        now = time.perf_counter()
+        if now - last_log >= log_seconds:
+            _log_progress(log, history, window_start, now, dim)
+            window_start, last_log = (len(history["phi"]), now), now
+        if checkpoint is not None and now - last_save >= checkpoint_seconds:
+            _save_checkpoint(checkpoint, key, positions, box, history,
+                             elapsed_before + now - started)
+            last_save = now
+    seconds = elapsed_before + time.perf_counter() - started
+    log.info("converged after %d LPs in %.1f s: phi = %.6f", len(history["phi"]), seconds,
+             history["phi"][-1])
+    if checkpoint is not None:
+        Path(checkpoint).unlink(missing_ok=True)
+    return JammedPacking(positions=positions, box=box, diameter=diameter, n_lp=len(history["phi"]),
+                         seconds=seconds, lp_seconds=float(np.sum(history["seconds"])),
+                         history={k: np.asarray(v) for k, v in history.items()}, params=params)
+
+
+def _log_progress(log, history, window_start, now, dim) -> None:
+    count, since = window_start
+    done = len(history["phi"])
+    rate = (done - count) / max(now - since, 1e-9)
+    phi = history["phi"][-1]
+    # rough ETA: LPs to compress at the current per-LP growth of phi up to a typical
+    # jamming density (0.64 in 3D, 0.84 in 2D), plus ~50 LPs of final convergence
+    recent = np.asarray(history["phi"][-20:])
+    growth = (recent[-1] - recent[0]) / max(len(recent) - 1, 1)
+    target = 0.64 if dim == 3 else 0.84
+    remaining = 50 + (max(target - phi, 0.0) / growth if growth > 0 else 0.0)
+    log.info("LP %d: phi = %.6f, Tr eps = %.3g, rescale - 1 = %.2g, %d rows, %.2f LPs/s "
+             "(%.2f s per LP solve), ETA ~ %.0f s", done, phi, history["trace"][-1],
+             history["rescale"][-1] - 1, history["rows"][-1], rate, history["seconds"][-1],
+             remaining / max(rate, 1e-9))
+
+
+# --------------------------------------------------------------------------- checkpoints
+
+
+def _checkpoint_key(positions, box, params, diameter) -> str:
+    """Identifies a construction: its start configuration and constants."""
+    payload = json.dumps({
+        "params": asdict(params), "diameter": diameter,
+        "start": hashlib.sha256(np.ascontiguousarray(positions).tobytes()
+                                + np.ascontiguousarray(box).tobytes()).hexdigest(),
+    }, sort_keys=True)
+    return hashlib.sha256(payload.encode()).hexdigest()
+
+
+def _save_checkpoint(path, key, positions, box, history, elapsed) -> None:
+    with atomic_output(path) as tmp:
+        with open(tmp, "wb") as handle:
+            np.savez(handle, key=key, positions=positions, box=box, elapsed=elapsed,
+                     **{f"history_{k}": np.asarray(v) for k, v in history.items()})
+
+
+def _load_checkpoint(path, key, log):
+    path = Path(path)
+    if not path.is_file():
+        return None
+    try:
+        with np.load(path) as data:
+            if str(data["key"]) != key:
+                log.warning("%s belongs to another construction; starting afresh", path)
+                return None
+            history = {k: data[f"history_{k}"].tolist() for k in _HISTORY_KEYS}
+            state = (data["positions"].copy(), data["box"].copy(), history, float(data["elapsed"]))
+    except (OSError, ValueError, KeyError) as exc:
+        log.warning("%s is unreadable (%s); starting afresh", path, exc)
+        return None
+    log.info("resumed from %s after %d LPs (phi = %.6f)", path, len(state[2]["phi"]),
+             state[2]["phi"][-1] if state[2]["phi"] else float("nan"))
+    return state
+
+
+# --------------------------------------------------------------------------- output file
+
+
+def packing_dataset(packing: JammedPacking, analysis, attrs: dict):
+    """The file contract of a packing (:func:`randmedia.generate.particle_config_dataset`:
+    ``position``, ``box``, D) plus its contact network, rattlers and construction record.
+
+    ``analysis`` is a :class:`randmedia.describe.jamming.JammingAnalysis` of the packing.
+    Variables: ``contact`` (contact, pair) sphere indices of every contact (gap test),
+    ``contact_gap`` and ``contact_force`` (force per unit pressure from the jamming
+    test's duals; 0 for contacts of rattlers), ``rattler`` (particle) and ``phi_history``
+    (lp): the packing fraction after each LP.
+    """
+    from randmedia.generate import particle_config_dataset
+
+    network = analysis.network
+    cell = Cell(packing.box)
+    _, _, _, near = pairs_within(cell, packing.positions,
+                                 packing.diameter * (1 + min(0.01, 0.5 * (cell.half_width - 1))))
+    gaps = near / packing.diameter - 1.0
+    noncontact = gaps[gaps >= network.gap_tolerance / packing.diameter]
+    record = {
+        "phi": packing.phi,
+        "n_lp": packing.n_lp,
+        "seconds": packing.seconds,
+        "lp_seconds": packing.lp_seconds,
+        "n_contacts": len(network.i),
+        "n_backbone_contacts": analysis.n_backbone_contacts,
+        "n_backbone": analysis.n_backbone,
+        "n_rattlers": int(analysis.rattler.sum()),
+        "rattler_fraction": analysis.rattler_fraction,
+        "z_mean_nonrattlers": analysis.z_mean_backbone,
+        "isostatic_excess": analysis.isostatic_excess,
+        "jammed": int(analysis.jammed),
+        "jamming_min_trace": analysis.min_trace,
+        "jamming_rank_ratio": analysis.rank_ratio,
+        "gap_tolerance": network.gap_tolerance,
+        "min_gap": float(gaps.min()) if gaps.size else np.nan,
+        "max_contact_gap": float(network.gap.max() / packing.diameter) if network.gap.size else np.nan,
+        "min_noncontact_gap": float(noncontact.min()) if noncontact.size else np.nan,
+        **{f"tj_{k}": v for k, v in asdict(packing.params).items()},
+        **attrs,
+    }
+    dataset = particle_config_dataset(packing.positions, packing.box, packing.diameter, record)
+    dataset["contact"] = (("contact", "pair"), network.pairs.astype(np.int64),
+                          {"units": "1", "long_name": "indices of the two spheres in contact"})
+    dataset["contact_gap"] = (("contact",), network.gap / packing.diameter,
+                              {"units": "D", "long_name": "gap (centre distance - D) of the contact"})
+    dataset["contact_force"] = (("contact",), analysis.forces,
+                                {"units": "1/D",
+                                 "long_name": "contact force / (pressure x cell volume), from the "
+                                              "duals of the jamming test (0 for rattler contacts)"})
+    dataset["rattler"] = (("particle",), analysis.rattler.astype(np.uint8),
+                          {"units": "1", "long_name": "1 = rattler (not held by the contacts)"})
+    dataset["phi_history"] = (("lp",), np.asarray(packing.history["phi"]),
+                              {"units": "1", "long_name": "packing fraction after each LP"})
+    dataset = dataset.assign_coords(
+        pair=("pair", np.arange(2), {"units": "1", "long_name": "sphere of the contact"}))
+    return dataset
+

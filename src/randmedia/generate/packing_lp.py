@@ -1,0 +1,180 @@
+"""Linearized non-overlap constraints of a periodic sphere packing and their linear programs.
+
+Shared by the Torquato-Jiao construction (:mod:`randmedia.generate.jammed`) and
+the jamming test (:mod:`randmedia.describe.jamming`).
+
+Variables. A packing of n spheres of diameter D in the periodic cell whose
+lattice vectors are the columns of ``box`` is deformed by a symmetric strain
+epsilon (d(d+1)/2 components) of the cell and Cartesian displacements u_i of
+the spheres; the new positions and cell are
+
+    x_i' = (I + epsilon)(x_i + u_i),       box' = (I + epsilon) box,
+
+so the fractional coordinates move by box^-1 u_i (Torquato & Jiao, PRE 82,
+061302 (2010), Sec. III; there the displacements are written in lattice
+coordinates, which is the same LP up to a change of variables). The variable
+vector is ``[strain components (diagonal first, then a < b), u_0, u_1, ...]``.
+
+Constraint of a pair. For the nearest-image separation r = x_j - x_i of a
+pair at distance rho, |r'|^2 = |r + u_j - u_i + epsilon (r + u_j - u_i)|^2 is,
+to first order in (u, epsilon),
+
+    |r|^2 + 2 r.(u_j - u_i) + 2 r^T epsilon r  >=  D^2 ,
+
+which, divided by 2 rho so that the row is in units of length along the unit
+normal n = r / rho (its LP dual is then the contact force per unit pressure),
+reads
+
+    n.(u_j - u_i) + rho sum_{a<=b} w_ab n_a n_b epsilon_ab  >=  (D^2 - rho^2) / (2 rho),
+
+with w_aa = 1 and w_ab = 2 for a < b. The objective is Tr epsilon, the first-
+order relative change of the cell volume, det(I + epsilon) - 1.
+
+What the linearization leaves out: |u_ij|^2 + 2 r^T epsilon u_ij + |epsilon
+(r + u_ij)|^2 + 2 u_ij^T epsilon u_ij. Pure translations and pure strains
+never make a linearly feasible pair overlap (the neglected squares are >= 0);
+only the cross term 2 r^T epsilon u_ij can, by at most ~ 2 rho |epsilon| |u_ij|.
+The construction removes those small overlaps by rescaling (see jammed.py).
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+import scipy.sparse as sp
+
+#: LP backends: HiGHS through ``highspy`` -- interior point (IPX) + crossover to a
+#: vertex (``highs-ipm``), interior point alone (``highs-ipx``: a point in the
+#: relative interior of the optimal face, strictly complementary), dual simplex
+#: (``highs-simplex``) -- and HiGHS' dual simplex through ``scipy.optimize.linprog``
+BACKENDS = ("highs-ipm", "highs-ipx", "highs-simplex", "scipy")
+
+
+class LPError(RuntimeError):
+    """An LP of a packing did not solve to optimality."""
+
+
+def strain_components(dim: int) -> list[tuple[int, int]]:
+    """(a, b) of each strain variable: the diagonal first, then a < b in row order."""
+    if dim not in (2, 3):
+        raise ValueError(f"dimension must be 2 or 3, got {dim}")
+    return [(a, a) for a in range(dim)] + [(a, b) for a in range(dim) for b in range(a + 1, dim)]
+
+
+def n_strain(dim: int) -> int:
+    return dim * (dim + 1) // 2
+
+
+def strain_matrix(values: np.ndarray, dim: int) -> np.ndarray:
+    """The symmetric d x d strain from its d(d+1)/2 LP variables."""
+    eps = np.zeros((dim, dim))
+    for k, (a, b) in enumerate(strain_components(dim)):
+        eps[a, b] = eps[b, a] = values[k]
+    return eps
+
+
+def constraint_matrix(n: int, i: np.ndarray, j: np.ndarray, separation: np.ndarray,
+                      distance: np.ndarray, *, strain: bool = True) -> sp.csr_matrix:
+    """Rows n.(u_j - u_i) + rho sum w_ab n_a n_b eps_ab of every pair (i, j) (module docstring).
+
+    ``separation[m]`` is the nearest-image vector from sphere i[m] to sphere j[m]
+    and ``distance[m]`` its length. Columns: the strain components (omitted when
+    ``strain`` is False), then the d displacement components of each sphere.
+    """
+    separation = np.asarray(separation, dtype=float)
+    m, dim = separation.shape
+    normal = separation / distance[:, None]
+    components = strain_components(dim) if strain else []
+    ns = len(components)
+    width = ns + 2 * dim
+    cols = np.empty((m, width), dtype=np.int64)
+    vals = np.empty((m, width))
+    for k, (a, b) in enumerate(components):
+        cols[:, k] = k
+        vals[:, k] = distance * normal[:, a] * normal[:, b] * (1.0 if a == b else 2.0)
+    for a in range(dim):
+        cols[:, ns + a] = ns + dim * i + a
+        vals[:, ns + a] = -normal[:, a]
+        cols[:, ns + dim + a] = ns + dim * j + a
+        vals[:, ns + dim + a] = normal[:, a]
+    rows = np.repeat(np.arange(m), width)
+    return sp.csr_matrix((vals.ravel(), (rows, cols.ravel())), shape=(m, ns + dim * n))
+
+
+def gap_bound(distance: np.ndarray, diameter: float) -> np.ndarray:
+    """Right-hand side (D^2 - rho^2) / (2 rho) of each pair's constraint (<= 0 without overlap)."""
+    return (diameter**2 - distance**2) / (2.0 * distance)
+
+
+@dataclass
+class LPSolution:
+    """Primal solution x, row duals (>= 0: force per unit pressure on each row), objective."""
+
+    x: np.ndarray
+    row_dual: np.ndarray
+    objective: float
+    seconds: float
+    iterations: int
+
+
+def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lower: np.ndarray,
+          col_upper: np.ndarray, *, backend: str = "highs-ipm", threads: int = 1,
+          sense: str = "min") -> LPSolution:
+    """Optimize cost.x subject to matrix x >= row_lower and col_lower <= x <= col_upper.
+
+    ``backend``: one of :data:`BACKENDS`. ``threads`` = 1 keeps the
+    solution bit-reproducible. Raises :class:`LPError` unless optimal.
+    """
+    if backend not in BACKENDS:
+        raise ValueError(f"unknown LP backend {backend!r}; expected one of {BACKENDS}")
+    if sense not in ("min", "max"):
+        raise ValueError(f"sense must be 'min' or 'max', got {sense!r}")
+    sign = 1.0 if sense == "min" else -1.0
+    cost = sign * np.asarray(cost, dtype=float)
+    tic = time.perf_counter()
+    if backend == "scipy":
+        from scipy.optimize import linprog
+
+        res = linprog(cost, A_ub=-sp.csr_matrix(matrix), b_ub=-np.asarray(row_lower, dtype=float),
+                      bounds=np.column_stack([col_lower, col_upper]), method="highs-ds")
+        if res.status != 0:
+            raise LPError(f"LP not solved to optimality: {res.message}")
+        return LPSolution(res.x, -res.ineqlin.marginals, sign * res.fun,
+                          time.perf_counter() - tic, int(res.nit))
+    import highspy
+
+    highs = highspy.Highs()
+    highs.setOptionValue("output_flag", False)
+    highs.setOptionValue("threads", int(threads))
+    if backend in ("highs-ipm", "highs-ipx"):
+        highs.setOptionValue("solver", "ipm")
+        highs.setOptionValue("run_crossover", "on" if backend == "highs-ipm" else "off")
+    else:
+        highs.setOptionValue("solver", "simplex")
+        highs.setOptionValue("simplex_strategy", 1)  # dual simplex
+    lp = highspy.HighsLp()
+    csc = sp.csc_matrix(matrix)
+    lp.num_col_ = csc.shape[1]
+    lp.num_row_ = csc.shape[0]
+    lp.col_cost_ = cost
+    lp.col_lower_ = np.asarray(col_lower, dtype=float)
+    lp.col_upper_ = np.asarray(col_upper, dtype=float)
+    lp.row_lower_ = np.asarray(row_lower, dtype=float)
+    lp.row_upper_ = np.full(csc.shape[0], highspy.kHighsInf)
+    lp.a_matrix_.format_ = highspy.MatrixFormat.kColwise
+    lp.a_matrix_.start_ = csc.indptr
+    lp.a_matrix_.index_ = csc.indices
+    lp.a_matrix_.value_ = csc.data
+    highs.passModel(lp)
+    highs.run()
+    status = highs.getModelStatus()
+    if status != highspy.HighsModelStatus.kOptimal:
+        raise LPError(f"LP not solved to optimality: {highs.modelStatusToString(status)}")
+    solution = highs.getSolution()
+    info = highs.getInfo()
+    iterations = int(info.simplex_iteration_count) + int(info.ipm_iteration_count)
+    return LPSolution(np.array(solution.col_value), np.array(solution.row_dual),
+                      sign * float(info.objective_function_value), time.perf_counter() - tic,
+                      iterations)

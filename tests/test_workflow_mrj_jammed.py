@@ -1,0 +1,74 @@
+"""The MRJ packings of the quick run: file contract, strict jamming, isostaticity, summary."""
+
+from __future__ import annotations
+
+import numpy as np
+import pandas as pd
+import pytest
+import yaml
+
+from conftest import run_snakemake
+from randmedia.describe import jamming
+from randmedia.generate import PARTICLE_CONFIG
+from randmedia.io import read_dataset
+from randmedia.periodic import Cell, pairs_within
+
+pytestmark = pytest.mark.workflow
+
+
+@pytest.fixture(scope="module")
+def jammed_run(quick_run):
+    """The quick run with the MRJ packings. Until mrj2016.smk puts JAMMED_TARGETS into
+    MRJ2016_TARGETS (hence into `all`), the named target mrj2016_jammed is built here in the
+    same working folder (only its own jobs run); afterwards this is a no-op."""
+    if not (quick_run / "results/mrj2016/packings.csv").exists():
+        result = run_snakemake(quick_run, "mrj2016_jammed", "--cores", "2", "--configfile",
+                               "config/quick.yaml")
+        assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-5000:]
+    return quick_run
+
+
+@pytest.fixture(scope="module")
+def section(jammed_run):
+    with open(jammed_run / "config" / "quick.yaml") as handle:
+        return yaml.safe_load(handle)["mrj2016"]["mrj"]
+
+
+def packing_files(workdir, section):
+    return [(system, k, workdir / f"results/mrj2016/configs/{system}/sample{k}.nc")
+            for system in ("mrj", "mrj_large") for k in range(section[system]["n_samples"])]
+
+
+def test_packings_follow_the_contract_and_are_jammed(jammed_run, section):
+    for system, k, path in packing_files(jammed_run, section):
+        ds = read_dataset(path, PARTICLE_CONFIG, attrs=jamming.PACKING_ATTRS + ("seconds", "seed"))
+        positions, box = ds["position"].values, ds["box"].values
+        assert positions.shape == (section[system]["n_particles"], 3)
+        assert ds.attrs["diameter"] == 1.0 and ds.attrs["system"] == system
+        _, _, _, distance = pairs_within(Cell(box), positions, 1.2)
+        assert distance.min() >= 1.0 - 1e-12  # no overlap
+        assert 0.58 < ds.attrs["phi"] < 0.66
+        assert ds.attrs["phi"] == pytest.approx(len(positions) * np.pi / 6 / np.linalg.det(box))
+        assert ds.attrs["jammed"] == 1 and ds.attrs["isostatic_excess"] == 0
+        n_b = len(positions) - int(ds["rattler"].values.sum())
+        assert ds.attrs["z_mean_nonrattlers"] == pytest.approx(6 + 6 / n_b)
+        # the stored contact list is the gap-test network of the stored packing
+        network = jamming.contact_network(positions, box, gap_tolerance=ds.attrs["gap_tolerance"])
+        np.testing.assert_array_equal(ds["contact"].values, network.pairs)
+        # contacts and the nearest non-contacts are decades apart (the tolerance is unambiguous)
+        assert ds["contact_gap"].values.max() < ds.attrs["gap_tolerance"]
+        assert ds.attrs["min_noncontact_gap"] > 100 * ds.attrs["gap_tolerance"]
+        assert 0 <= ds.attrs["Q6"] < 0.2 and ds.attrs["crystal_fraction"] < 0.05
+
+
+def test_packings_table_matches_the_files(jammed_run, section):
+    table = pd.read_csv(jammed_run / "results/mrj2016/packings.csv")
+    for system in ("mrj", "mrj_large"):
+        rows = table[(table["system"] == system) & ~table["sample"].isin(["mean", "sem"])]
+        assert len(rows) == section[system]["n_samples"]
+        mean = table[(table["system"] == system) & (table["sample"] == "mean")].iloc[0]
+        assert mean["phi"] == pytest.approx(rows["phi"].mean())
+        assert mean["jammed"] == 1.0
+    for system, k, path in packing_files(jammed_run, section):
+        row = table[(table["system"] == system) & (table["sample"] == str(k))].iloc[0]
+        assert row["phi"] == pytest.approx(read_dataset(path).attrs["phi"], rel=1e-12)
