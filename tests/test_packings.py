@@ -116,9 +116,10 @@ def test_limits_and_sum_rules(rsa_triclinic):
     assert np.isinf(f["F_ss"][0])
     assert phi == pytest.approx(len(x) * V_R / cell.volume)
     # slope of S2 at 0 is -s/4 (Sec. III B): the one-body part gives -s/4 + s r^2/12 exactly;
-    # the two-body part (pairs with gap < r) is >= 0 and below z r^2/20 with z <= 12
+    # the two-body part (pairs with gap < r) is >= 0 and below phi z r^2/4 (Eq. A7 at contact)
+    # with z <= 12
     two_body = f["S2"][1] - phi * packings.one_body_terms(0.01, R)["p"]
-    assert 0 <= two_body < 12 * phi * 0.01**2 / 20
+    assert 0 <= two_body < 12 * phi * 0.01**2 / 4
     one_body_slope = (phi * packings.one_body_terms(0.01, R)["p"] - phi) / 0.01
     assert one_body_slope == pytest.approx(-s / 4 + s * 0.01**2 / 12, rel=1e-9)
     # F*_sv, F*_ss vanish below the smallest gap; two-body parts are the full functions beyond D

@@ -217,6 +217,7 @@ rule mrj2016_figure:
     input:
         unpack(lambda wildcards: M_FIGURE_INPUTS[int(wildcards.nn)]),
         code=package_sources("plot/style.py", "plot/mrj2016.py", "theory/overlapping.py",
+                             "theory/hard_spheres.py", "theory/scaled_particle.py",
                              "describe/spectral.py", "fit/number_variance.py"),
     output:
         pdf=M_RESULTS + "/figures/fig{nn}.pdf",
@@ -271,7 +272,7 @@ rule mrj2016_comparison:
         tables=expand(M_RESULTS + "/tables/table{n}.csv", n=M_TABLES),
         references=list(M_REFERENCE.values()),
         code=package_sources("compare/__init__.py", "compare/mrj2016.py", "theory/overlapping.py",
-                             "generate/spheres.py"),
+                             "theory/scaled_particle.py", "generate/spheres.py"),
     output:
         comparison=M_RESULTS + "/comparison.csv",
         notes=M_RESULTS + "/comparison_notes.csv",

@@ -464,6 +464,21 @@ def _validation_rows(rows: Rows, inputs, params):
                      float(spec["S_peak_min"].values.min()), 0.0, systematic=1e-6)
             rows.add(f"validation_{lattice}_S_off_peaks_over_N", "max", 0.0,
                      float(spec["S_off_max"].values.max()), 0.0, systematic=1e-6)
+    pts = _load(inputs, "points", "equilibrium")
+    if pts is not None:  # the liquid against scaled-particle theory (an approximation, Sec. V A-B)
+        from randmedia.theory import scaled_particle
+
+        phi_liquid = float(np.mean(pts["eta"].values))
+        note = "scaled-particle theory is an approximation (Refs. [39,77,78])"
+        moments = scaled_particle.pore_size_moments(phi_liquid, 3)
+        for n, name in ((0, "mean_pore_size"), (1, "second_moment_pore_size")):
+            rows.add(f"check_equilibrium_{name}_vs_scaled_particle", f"phi={phi_liquid:.4f}",
+                     float(moments[n]), *_mean_sem(pts[name].values), reason_if_failed=note)
+        for r in (0.6, 0.7, 0.8):
+            mean, sem = _value_at(pts, "r", "E_V", r)
+            rows.add("check_equilibrium_E_V_vs_scaled_particle", f"r/D={r:g}",
+                     float(scaled_particle.exclusion_probability(r, phi_liquid, 3)), mean, sem,
+                     reason_if_failed=note)
     for system in ("equilibrium", "mrj"):
         pts = _load(inputs, "points", system)
         corr = _load(inputs, "correlation", system)
@@ -477,8 +492,9 @@ def _validation_rows(rows: Rows, inputs, params):
             r1 = float(corr["r"].values[1])
             slope = (corr["S2"].values[:, 1] - corr["S2"].values[:, 0]) / r1 / corr["s"].values
             # finite-difference bias: one-body r1^2/12 (from p_ii, Eq. A6) plus the two-body
-            # term of spheres at contact, at most z r1/120 with z <= 12 (kissing number)
-            bias = r1**2 / 12.0 + r1 / 10.0
+            # term of spheres at contact, phi z r1^2/4 in S2 (Eq. A7 at rho = D), i.e. z r1/24
+            # in the slope over s, with z <= 12 (kissing number)
+            bias = r1**2 / 12.0 + 12.0 * r1 / 24.0
             rows.add(f"validation_{system}_S2_slope_over_s", f"r=0..{r1:g}D", -0.25, *_mean_sem(slope),
                      systematic=bias, reason_if_failed="not identified")
 

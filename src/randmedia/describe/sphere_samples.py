@@ -408,8 +408,20 @@ def summarize(chunks: Iterable[xr.Dataset], kind: str, *, spectral: dict, window
         ds["chi_ft_mean"] = (("k_ft",), mean, _meta("D^3", "Eq. (11) spectral density, mean over samples"))
         ds["chi_ft_sem"] = (("k_ft",), sem, _meta("D^3", "Eq. (11) spectral density, SEM over samples"))
         ds.attrs.update(r_cut=ft.attrs["r_cut"], k_min_reliable=ft.attrs["k_min_reliable"])
+    if kind == "points":
+        # SEM floor: the pooled estimate of a fraction of N_total uniform points has at least the
+        # binomial error sqrt(E (1 - E) / N_total) (configurations add variance, never remove it);
+        # with few samples the SEM over samples can fall below it by chance
+        n_total = float(ds["n_points"].values.sum())
+        for name in ("E_V", "F"):
+            mean = ds[f"{name}_mean"].values
+            scale = n_total if name == "E_V" else float(ds["n_matrix"].values.sum())
+            floor = np.sqrt(np.clip(mean * (1 - mean), 0, None) / scale)
+            ds[f"{name}_sem"].values[:] = np.fmax(ds[f"{name}_sem"].values, floor)
+            ds[f"{name}_sem"].attrs["long_name"] += " (at least the binomial error of the pooled points)"
     if kind == "windows":
         _summarize_windows(ds, windows)
+        ds.attrs["fit_r_min"] = float(windows["fit_r_min"])
     return ds
 
 

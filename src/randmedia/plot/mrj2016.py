@@ -163,6 +163,7 @@ def fig06(inputs, params, log):
     zeros = form_factor_zeros(k_max)
     panels = [("mrj_large", axes[0]), ("equilibrium", axes[1])]
     for system, ax in panels:
+        title = LABELS[system]
         spec = _load(inputs, f"spectral_{system}", log)
         corr = _load(inputs, f"correlation_{system}", log)
         colour = COLOURS[system]
@@ -176,9 +177,8 @@ def fig06(inputs, params, log):
             kk = np.nanmean(spec["k_mean"].values, axis=0)[good]
             ax.errorbar(kk, spec["chi_mean"].values[good], yerr=spec["chi_sem"].values[good], fmt="x",
                         ms=2.5, color="k", lw=0.6, label=r"$|\tilde J(\mathbf{k})|^2/V$ (Eq. 14)")
-            ax.text(0.97, 0.9, rf"{LABELS[system]}, $\phi = {float(np.mean(spec['eta'].values)):.3f}$, "
-                               rf"$N = {float(np.mean(spec['n'].values)):.0f}$",
-                    transform=ax.transAxes, ha="right", va="top", fontsize=7)
+            title = (rf"{LABELS[system]}, $\phi = {float(np.mean(spec['eta'].values)):.3f}$, "
+                     rf"$N = {float(np.mean(spec['n'].values)):.0f}$, {spec.sizes['sample']} samples")
             if system == "equilibrium":
                 s0 = _liquid_s0(float(np.mean(spec["eta"].values)), log)
                 if s0 is not None:
@@ -186,16 +186,15 @@ def fig06(inputs, params, log):
                     ax.axhline(phi * math.pi / 6.0 * s0, color=colour, ls="--", lw=0.8,
                                label=r"$\phi v_D S(0)$ (EOS, Eq. 32)")
         ax.set_ylabel(r"$\tilde\chi_V(k)/D^3$")
-        ax.legend(loc="upper left", fontsize=6)
+        ax.legend(loc="upper right", fontsize=6, title=title, title_fontsize=6)
     phi = params["overlapping_phi"]
     k = np.linspace(0.05, k_max, 500)
     axes[2].plot(k, overlapping_spectral_density(k, phi), color=COLOURS["overlapping"],
                  label="overlapping spheres (exact, Eq. 11)")
     axes[2].axhline(float(overlapping_spectral_density([0.0], phi)[0]), color="0.5", ls="--", lw=0.8,
                     label=r"$\tilde\chi_V(0)$")
-    axes[2].text(0.97, 0.9, rf"$\phi = {phi:g}$", transform=axes[2].transAxes, ha="right", va="top")
     axes[2].set_ylabel(r"$\tilde\chi_V(k)/D^3$")
-    axes[2].legend(loc="upper right", fontsize=6)
+    axes[2].legend(loc="upper right", fontsize=6, title=rf"$\phi = {phi:g}$", title_fontsize=6)
     for ax in axes[:2]:
         for z in zeros:
             ax.axvline(z, color="0.5", ls="--", lw=0.6)
@@ -207,22 +206,16 @@ def fig06(inputs, params, log):
 
 def _liquid_s0(phi, log):
     """S(0) = rho k_B T kappa_T of the hard-sphere liquid (Eq. 32) from the equation of state."""
-    try:
-        from randmedia.theory.hard_spheres import structure_factor_zero
-    except ImportError:
-        log.warning("randmedia.theory.hard_spheres not available: no S(0) line")
-        return None
+    from randmedia.theory.hard_spheres import structure_factor_zero
+
     return float(structure_factor_zero(phi, 3))
 
 
 def _liquid_pore_theory(phi, log):
     """(F(delta), E_V(r)) callables of the liquid by scaled-particle theory (Refs. [39,77,78])."""
-    try:
-        from randmedia.theory import scaled_particle
-    except ImportError:
-        log.warning("randmedia.theory.scaled_particle not available: no liquid theory curves")
-        return None
-    return (lambda delta: scaled_particle.pore_size_complementary_cdf(delta, phi, 3),
+    from randmedia.theory import scaled_particle
+
+    return (lambda delta: scaled_particle.pore_size_ccdf(delta, phi, 3),
             lambda r: scaled_particle.exclusion_probability(r, phi, 3))
 
 
