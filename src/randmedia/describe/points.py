@@ -68,6 +68,8 @@ class CellList:
         flat = (index[:, 0] * self.n_cells[1] + index[:, 1]) * self.n_cells[2] + index[:, 2]
         order = np.argsort(flat, kind="stable")
         self.frac = np.ascontiguousarray(frac[order])
+        #: Cartesian coordinates of the wrapped centres, in cell order
+        self.cart = np.ascontiguousarray(self.frac @ self.cell.box.T)
         counts = np.bincount(flat, minlength=int(np.prod(self.n_cells)))
         self.start = np.concatenate(([0], np.cumsum(counts))).astype(np.int64)
         self.box = np.ascontiguousarray(self.cell.box)
@@ -90,26 +92,31 @@ def _cell_of(f, n_cells):
 
 
 @njit(cache=True)
-def _shell_min(q, frac, start, n_cells, box, c0, c1, c2, s, best):
-    """Minimum squared distance from q to centres in the cells at Chebyshev distance s."""
+def _shell_min(qc, cart, start, n_cells, box, c0, c1, c2, s, best):
+    """Minimum squared distance from the point qc (Cartesian) to centres in the cells at
+    Chebyshev distance s from cell (c0, c1, c2); periodic images by whole-cell shifts."""
     for d0 in range(-s, s + 1):
+        a0 = c0 + d0
+        s0 = math.floor(a0 / n_cells[0])
+        w0 = a0 - s0 * n_cells[0]
         for d1 in range(-s, s + 1):
+            a1 = c1 + d1
+            s1 = math.floor(a1 / n_cells[1])
+            w1 = a1 - s1 * n_cells[1]
             for d2 in range(-s, s + 1):
                 if max(abs(d0), abs(d1), abs(d2)) != s:
                     continue
-                a0, a1, a2 = c0 + d0, c1 + d1, c2 + d2
-                s0 = math.floor(a0 / n_cells[0])
-                s1 = math.floor(a1 / n_cells[1])
+                a2 = c2 + d2
                 s2 = math.floor(a2 / n_cells[2])
-                w0, w1, w2 = a0 - s0 * n_cells[0], a1 - s1 * n_cells[1], a2 - s2 * n_cells[2]
+                w2 = a2 - s2 * n_cells[2]
                 flat = (w0 * n_cells[1] + w1) * n_cells[2] + w2
+                sh0 = box[0, 0] * s0 + box[0, 1] * s1 + box[0, 2] * s2 - qc[0]
+                sh1 = box[1, 0] * s0 + box[1, 1] * s1 + box[1, 2] * s2 - qc[1]
+                sh2 = box[2, 0] * s0 + box[2, 1] * s1 + box[2, 2] * s2 - qc[2]
                 for p in range(start[flat], start[flat + 1]):
-                    f0 = frac[p, 0] + s0 - q[0]
-                    f1 = frac[p, 1] + s1 - q[1]
-                    f2 = frac[p, 2] + s2 - q[2]
-                    x = box[0, 0] * f0 + box[0, 1] * f1 + box[0, 2] * f2
-                    y = box[1, 0] * f0 + box[1, 1] * f1 + box[1, 2] * f2
-                    z = box[2, 0] * f0 + box[2, 1] * f1 + box[2, 2] * f2
+                    x = cart[p, 0] + sh0
+                    y = cart[p, 1] + sh1
+                    z = cart[p, 2] + sh2
                     d2 = x * x + y * y + z * z
                     if d2 < best:
                         best = d2
@@ -117,9 +124,12 @@ def _shell_min(q, frac, start, n_cells, box, c0, c1, c2, s, best):
 
 
 @njit(cache=True)
-def _nearest(queries, frac, start, n_cells, box, widths, out):
+def _nearest(queries, cart, start, n_cells, box, widths, out):
+    qc = np.empty(3)
     for m in range(queries.shape[0]):
         q = queries[m]
+        for i in range(3):
+            qc[i] = box[i, 0] * q[0] + box[i, 1] * q[1] + box[i, 2] * q[2]
         c0, c1, c2 = _cell_of(q, n_cells)
         # distance (in cell widths) from q to the faces of its own cell, per axis
         t0 = q[0] * n_cells[0] - c0
@@ -131,7 +141,7 @@ def _nearest(queries, frac, start, n_cells, box, widths, out):
         best = np.inf
         s = 0
         while True:
-            best = _shell_min(q, frac, start, n_cells, box, c0, c1, c2, s, best)
+            best = _shell_min(qc, cart, start, n_cells, box, c0, c1, c2, s, best)
             # every centre outside the shells 0..s is farther than margin + s * min_width
             guaranteed = margin + s * min_width
             if best <= guaranteed * guaranteed:
@@ -144,7 +154,7 @@ def nearest_distances(cells: CellList, points) -> np.ndarray:
     """Distance from each point to the nearest centre (exact, periodic, any cell shape)."""
     queries = cells.query_fractional(points)
     out = np.empty(len(queries))
-    _nearest(queries, cells.frac, cells.start, cells.n_cells, cells.box,
+    _nearest(queries, cells.cart, cells.start, cells.n_cells, cells.box,
              np.ascontiguousarray(cells.cell_width), out)
     return out
 
@@ -262,21 +272,27 @@ def _gap(d, t):
 
 
 @njit(cache=True)
-def _window_counts(queries, frac, start, n_cells, box, widths, lam_min, radii, n_radius_of_window,
-                   out):
+def _window_counts(queries, cart, start, n_cells, box, widths, lam_min, radii2, lut, lut_scale,
+                   n_radius_of_window, out):
     """out[m, i] = number of centres within radii[i] of window m, for i < n_radius_of_window[m].
 
     Cells are skipped when a lower bound of their distance to the window centre
     exceeds the largest radius: |B f|^2 >= lam_min |f|^2 for the fractional gap f
     (lam_min = smallest eigenvalue of B^T B; exact culling for orthogonal cells).
+    The radius index of a squared distance comes from a lookup table on d^2
+    (``lut[int(d2 * lut_scale)]`` is the first index whose radius^2 may exceed d2),
+    corrected by a few comparisons.
     """
+    qc = np.empty(3)
     for m in range(queries.shape[0]):
         n_r = n_radius_of_window[m]
         if n_r == 0:
             continue
-        r_max = radii[n_r - 1]
-        r_max2 = r_max * r_max
+        r_max2 = radii2[n_r - 1]
+        r_max = math.sqrt(r_max2)
         q = queries[m]
+        for i in range(3):
+            qc[i] = box[i, 0] * q[0] + box[i, 1] * q[1] + box[i, 2] * q[2]
         c0, c1, c2 = _cell_of(q, n_cells)
         t0 = q[0] * n_cells[0] - c0
         t1 = q[1] * n_cells[1] - c1
@@ -309,29 +325,31 @@ def _window_counts(queries, frac, start, n_cells, box, widths, lam_min, radii, n
                     s2 = math.floor(a2 / n_cells[2])
                     w2 = a2 - s2 * n_cells[2]
                     flat = (w0 * n_cells[1] + w1) * n_cells[2] + w2
+                    sh0 = box[0, 0] * s0 + box[0, 1] * s1 + box[0, 2] * s2 - qc[0]
+                    sh1 = box[1, 0] * s0 + box[1, 1] * s1 + box[1, 2] * s2 - qc[1]
+                    sh2 = box[2, 0] * s0 + box[2, 1] * s1 + box[2, 2] * s2 - qc[2]
                     for p in range(start[flat], start[flat + 1]):
-                        f0 = frac[p, 0] + s0 - q[0]
-                        f1 = frac[p, 1] + s1 - q[1]
-                        f2 = frac[p, 2] + s2 - q[2]
-                        x = box[0, 0] * f0 + box[0, 1] * f1 + box[0, 2] * f2
-                        y = box[1, 0] * f0 + box[1, 1] * f1 + box[1, 2] * f2
-                        z = box[2, 0] * f0 + box[2, 1] * f1 + box[2, 2] * f2
+                        x = cart[p, 0] + sh0
+                        y = cart[p, 1] + sh1
+                        z = cart[p, 2] + sh2
                         d2 = x * x + y * y + z * z
                         if d2 < r_max2:
-                            # first radius index i with d < radii[i] (radii ascending)
-                            d = math.sqrt(d2)
-                            lo, hi = 0, n_r - 1
-                            while lo < hi:
-                                mid = (lo + hi) // 2
-                                if radii[mid] > d:
-                                    hi = mid
-                                else:
-                                    lo = mid + 1
-                            hist[lo] += 1
+                            # first radius index i with d2 < radii2[i] (radii ascending)
+                            i = lut[int(d2 * lut_scale)]
+                            while radii2[i] <= d2:
+                                i += 1
+                            hist[i] += 1
         running = 0
         for i in range(n_r):
             running += hist[i]
             out[m, i] = running
+
+
+def _radius_lookup(radii2, size: int = 4096):
+    """lut[j] = first index i with radii2[i] > j / scale (j = 0..size), scale = size / radii2[-1]."""
+    scale = size / radii2[-1]
+    lut = np.searchsorted(radii2, np.arange(size + 1) / scale, side="right").astype(np.int64)
+    return np.minimum(lut, len(radii2) - 1), scale
 
 
 def window_counts(positions, box, centres, radii, n_per_radius) -> np.ndarray:
@@ -357,9 +375,11 @@ def window_counts(positions, box, centres, radii, n_per_radius) -> np.ndarray:
     if np.any(np.diff(n_per_radius) > 0):
         raise ValueError("throws must not increase with the radius (nested windows)")
     out = np.full((n_windows, len(radii)), -1, dtype=np.int64)
-    _window_counts(cells.query_fractional(centres), cells.frac, cells.start, cells.n_cells,
+    radii2 = radii * radii
+    lut, scale = _radius_lookup(radii2)
+    _window_counts(cells.query_fractional(centres), cells.cart, cells.start, cells.n_cells,
                    cells.box, np.ascontiguousarray(cells.cell_width),
-                   float(np.linalg.eigvalsh(cells.box.T @ cells.box).min()), radii,
+                   float(np.linalg.eigvalsh(cells.box.T @ cells.box).min()), radii2, lut, scale,
                    n_radius_of_window.astype(np.int64), out)
     return out
 
