@@ -173,3 +173,14 @@ def test_contact_number_weights_gapped_pairs():
     c = packings.contact_number(x, box, r=1e-3)
     expected_pairs = 1.0 + (1 - 0.0005 / 1e-3) * 1.0005 ** -1 * 1.0  # rho D / rho ~ 1
     assert c["z_B4"] == pytest.approx(2 * expected_pairs / 4, rel=1e-3)
+
+
+def test_blocks_of_radii_give_the_same_functions(rsa_triclinic, monkeypatch):
+    """Processing the radii in blocks (bounded memory for N = 10 000) changes nothing."""
+    r = np.linspace(0, packings.max_radius(TRICLINIC) - 1e-6, 120)
+    whole = packings.correlation_functions(rsa_triclinic, TRICLINIC, r)
+    monkeypatch.setattr(packings, "MAX_PAIRS_PER_BLOCK", 300)
+    assert len(packings._radius_blocks(r, packings.pair_distances(rsa_triclinic, TRICLINIC, 2.5), 1.0)) > 5
+    blocked = packings.correlation_functions(rsa_triclinic, TRICLINIC, r)
+    for name in packings.CORRELATION_VARIABLES:
+        np.testing.assert_allclose(blocked[name], whole[name], rtol=1e-10, atol=1e-12)
