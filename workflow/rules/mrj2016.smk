@@ -107,37 +107,38 @@ wildcard_constraints:
 # --------------------------------------------------------------------------- generate
 
 
-rule mrj2016_overlapping_sample:
-    """Overlapping spheres at phi = 0.636: Poisson centres in a periodic cube (Sec. III A)."""
+rule mrj2016_overlapping_samples:
+    """Overlapping spheres at phi = 0.636: Poisson centres in a periodic cube (Sec. III A), all
+    samples in one job (each from its own seeded generator; milliseconds per sample)."""
     input:
         package_sources("generate/spheres.py", "generate/__init__.py", "seeding.py"),
     output:
-        M_RESULTS + "/configs/overlapping/sample{k}.nc",
+        M_SAMPLES["overlapping"],
     params:
         phi=M_OVERLAPPING["phi"],
         n_mean=M_OVERLAPPING["n_mean"],
         seed=config["seed"],
     log:
-        M_RESULTS + "/logs/overlapping_sample{k}.log",
+        M_RESULTS + "/logs/overlapping_samples.log",
     threads: 1
     script:
-        "../scripts/mrj2016/overlapping_sample.py"
+        "../scripts/mrj2016/overlapping_samples.py"
 
 
-rule mrj2016_lattice_sample:
-    """fcc / bcc lattice of touching spheres, randomly translated (Sec. V A)."""
+rule mrj2016_lattice_samples:
+    """fcc / bcc lattice of touching spheres, randomly translated copies (Sec. V A)."""
     input:
         package_sources("generate/spheres.py", "generate/__init__.py", "seeding.py"),
     output:
-        M_RESULTS + "/configs/{lattice}/sample{k}.nc",
+        expand(M_RESULTS + "/configs/{{lattice}}/sample{k}.nc", k=range(M_LATTICES["n_samples"])),
     params:
         n_cells=lambda wildcards: M_LATTICES[f"{wildcards.lattice}_cells"],
         seed=config["seed"],
     log:
-        M_RESULTS + "/logs/{lattice}_sample{k}.log",
+        M_RESULTS + "/logs/{lattice}_samples.log",
     threads: 1
     script:
-        "../scripts/mrj2016/lattice_sample.py"
+        "../scripts/mrj2016/lattice_samples.py"
 
 
 # --------------------------------------------------------------------------- describe
@@ -168,19 +169,31 @@ rule mrj2016_describe_chunk:
         "../scripts/mrj2016/describe_chunk.py"
 
 
+def m_describe_inputs(wildcards):
+    """The chunk files of a system with several chunks; its samples when they form one chunk
+    (then the merge job computes them itself: one job instead of two)."""
+    if m_n_chunks(wildcards.system) == 1:
+        return {"samples": M_SAMPLES[wildcards.system]}
+    return {"chunks": expand(M_RESULTS + "/descriptors/{system}/{kind}_chunk{c}.nc",
+                             system=wildcards.system, kind=wildcards.kind,
+                             c=range(m_n_chunks(wildcards.system)))}
+
+
 rule mrj2016_describe:
-    """All chunks of one descriptor kind of one system: per-sample values, mean, SEM (+ Eq. 11
-    transform for correlation; pooled number variance and its fits for windows)."""
+    """One descriptor kind of one system: per-sample values, mean, SEM (+ Eq. 11 transform for
+    correlation; pooled number variance and its fits for windows), merged over the chunks."""
     input:
-        chunks=lambda wildcards: expand(M_RESULTS + "/descriptors/{system}/{kind}_chunk{c}.nc",
-                                        system=wildcards.system, kind=wildcards.kind,
-                                        c=range(m_n_chunks(wildcards.system))),
-        code=package_sources("describe/sphere_samples.py", "describe/spectral.py",
+        unpack(m_describe_inputs),
+        code=package_sources("describe/sphere_samples.py", "describe/spectral.py", "describe/packings.py",
                              "describe/points.py", "fit/number_variance.py"),
     output:
         M_RESULTS + "/descriptors/{system}_{kind}.nc",
     params:
+        seed=config["seed"],
+        descriptors=M_DESCRIPTORS,
         spectral=M_SPECTRAL,
+        table_k=lambda wildcards: M_TABLE_K.get(wildcards.system, []),
+        pores=M_PORES,
         windows=M_WINDOWS,
     log:
         M_RESULTS + "/logs/{system}_{kind}.log",

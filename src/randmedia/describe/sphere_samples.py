@@ -312,6 +312,51 @@ def windows_samples(configs: Sequence, rngs: Sequence[np.random.Generator], *, r
                                                   "radius_step": float(radius_step)})
 
 
+# --------------------------------------------------------------------------- one kind, one set of samples
+
+
+KINDS = ("correlation", "spectral", "points", "windows")
+
+
+def describe(kind: str, system: str, configs: Sequence, *, first: int, seed: int, descriptors: dict,
+             spectral: dict, table_k, pores: dict, windows: dict, nthreads: int = 1, log=None):
+    """Per-sample dataset of one descriptor ``kind`` of ``configs`` (samples first, first + 1, ...)
+    of ``system``, with the config values it used. Monte Carlo kinds draw from one generator per
+    sample, seeded from (seed, "mrj2016", f"{system}/{kind}", sample index)."""
+    from randmedia.seeding import sample_rng, sample_seed
+
+    if kind not in KINDS:
+        raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
+    indices = range(first, first + len(configs))
+    used = {"system": system, "kind": kind, "first": first}
+    if kind == "correlation":
+        used.update(descriptors)
+        dataset = correlation_samples(configs, r_step=descriptors["r_step"], r_max=descriptors["r_max"],
+                                      contact_r=descriptors["contact_r"], first=first)
+    elif kind == "spectral":
+        from randmedia.generate.spheres import bragg_peak_count
+
+        used.update(spectral, table_k=list(table_k))
+        bragg = bragg_peak_count(system, spectral["k_max"]) if system in ("fcc", "bcc") else None
+        dataset = spectral_samples(configs, k_max=spectral["k_max"], bin_width=spectral["bin_width"],
+                                   table_k=table_k, table_width=spectral["table_bin_width"],
+                                   eps=spectral["nufft_eps"], nthreads=nthreads, first=first, bragg=bragg)
+    elif kind == "points":
+        used.update(pores, seed=seed)
+        rngs = [sample_rng(sample_seed(seed, "mrj2016", f"{system}/points", k)) for k in indices]
+        dataset = points_samples(configs, rngs, n_matrix_points=pores["matrix_points"],
+                                 bin_width=pores["bin_width"], d_max=pores["d_max"], first=first,
+                                 covering=system != "overlapping", log=log)
+    else:
+        used.update(windows, seed=seed)
+        rngs = [sample_rng(sample_seed(seed, "mrj2016", f"{system}/windows", k)) for k in indices]
+        dataset = windows_samples(configs, rngs, radius_step=windows["radius_step"],
+                                  fR_radii=windows["fR_radii"], phi_B=windows["phi_B"],
+                                  max_windows=windows["max_windows"], first=first)
+    dataset.attrs["system"] = system
+    return dataset, used
+
+
 # --------------------------------------------------------------------------- merge
 
 
