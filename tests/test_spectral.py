@@ -115,3 +115,21 @@ def test_direct_spectral_density_of_a_packing_matches_eq11_at_large_k():
     direct, _, kk = spectral.centred_bin_means(kmag, chi_direct, centres, 1.0)
     ft = spectral.spectral_density_from_autocovariance(r, f["S2"] - f["phi"] ** 2, kk)
     np.testing.assert_allclose(direct, ft, rtol=0.25)
+
+
+def test_table_iv_labels_are_the_shells_of_the_liquid_cell():
+    """Table IV's kD are m * 4 pi / L of the N = 10 000, phi = 0.478 cube, rounded; Table V's are not."""
+    import pandas as pd
+
+    from conftest import REPO
+
+    table4 = pd.read_csv(REPO / "config/reference/mrj2016_table4_spectral_equilibrium.csv")["kD"]
+    side = (10_000 * math.pi / 6 / 0.478) ** (1 / 3)
+    centres, snapped = spectral.snap_to_shells(table4, np.eye(3) * side)
+    assert snapped
+    np.testing.assert_allclose(centres, np.arange(1, 32) * 4 * math.pi / side)
+    assert np.all(np.abs(centres - table4) < 0.07)
+    table5 = pd.read_csv(REPO / "config/reference/mrj2016_table5_spectral_mrj.csv")["kD"]
+    assert not spectral.snap_to_shells(table5, np.eye(3) * 20.2)[1]
+    assert not spectral.snap_to_shells(table4, np.eye(3) * 8.2)[1]  # another cell size
+    assert not spectral.snap_to_shells(table4, np.diag([side, side, side + 1]))[1]  # not cubic

@@ -116,8 +116,10 @@ def table_spectral(inputs, params, number: int) -> pd.DataFrame:
     if not np.allclose(k_table, reference["kD"].values):
         raise ValueError(f"{inputs[f'spectral_{system}']}: its k_table does not match {inputs['reference']}")
     counts = spec["k_table_count"].values.sum(axis=0)
+    centre = spec["k_table_centre"].values if "k_table_centre" in spec else k_table
     return pd.DataFrame({
         "kD": k_table,
+        "bin_centre_kD": centre,
         "chiV_over_D3": spec["chi_table_mean"].values,
         "sem_over_D3": spec["chi_table_sem"].values,
         "wavevectors": counts.astype(int),

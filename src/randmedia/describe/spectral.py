@@ -200,6 +200,28 @@ def centred_bin_means(kmag, values, centres, width: float):
     return mean[0::2], count[0::2], kmean[0::2]
 
 
+def snap_to_shells(labels, box, step: int = 2):
+    """Bin centres for a table whose kD column labels consecutive shells of a cubic cell.
+
+    Table IV of Klatt & Torquato lists kD = 0.6, 1.1, 1.7, 2.3, 2.8, ..., 17.6: the m-th
+    entry is m * 2 (2 pi / L) of the cubic cell of the N = 10 000 liquid (L ~ 22.2 D),
+    rounded to one decimal. If the labels are m = 1, 2, 3, ... times step * 2 pi / L of the
+    (cubic) ``box``, each within a quarter of that spacing, those multiples are returned
+    (and True); otherwise the labels themselves (and False) -- e.g. Table V, whose 0.6 m
+    are not multiples of an MRJ cell's 2 pi / L, or cells of another size.
+    """
+    labels = np.asarray(labels, dtype=float)
+    cell = Cell(box)
+    sides = np.diag(cell.box)
+    if not (np.allclose(cell.box, np.diag(sides)) and np.allclose(sides, sides[0])):
+        return labels, False
+    spacing = step * 2.0 * math.pi / sides[0]
+    m = np.round(labels / spacing)
+    if np.array_equal(m, np.arange(1, labels.size + 1)) and np.all(np.abs(labels - m * spacing) < spacing / 4):
+        return m * spacing, True
+    return labels, False
+
+
 # --------------------------------------------------------------------------- Eq. (11)
 
 

@@ -145,17 +145,25 @@ def autocovariance_transform(ds: xr.Dataset, k) -> xr.Dataset:
 
 def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table_k=(),
                      table_width: float | None = None, eps: float = 1e-9, nthreads: int = 1,
-                     first: int = 0, bragg=None) -> xr.Dataset:
+                     first: int = 0, bragg=None, snap_table: bool = False) -> xr.Dataset:
     """Direct spectral density (Eq. 14) on all allowed wavevectors, binned per sample.
 
     Fine bins [i w, (i+1) w) of width ``bin_width`` up to k_max (Fig. 6), and
-    bins of ``table_width`` centred on ``table_k`` (Tables IV, V). ``bragg``
+    bins of ``table_width`` centred on ``table_k`` (Tables IV, V; with ``snap_table`` on the
+    cubic cell's shells that the labels round, see spectral.snap_to_shells). ``bragg``
     (optional): expected Bragg wavevector magnitudes of a lattice; then the
     number of wavevectors with S > N/2 and the extreme S values are recorded.
     """
     edges = np.arange(0.0, k_max + 0.5 * bin_width, bin_width)
     edges = edges[edges <= k_max + 1e-12]
     table_k = np.asarray(table_k, dtype=float)
+    table_labels = table_k
+    snapped = False
+    if table_k.size and snap_table and configs:  # Table IV: exact shells of the cubic cell
+        table_k, snapped = spectral.snap_to_shells(table_k, configs[0][1])
+        if snapped and any(not np.allclose(spectral.snap_to_shells(table_labels, box)[0], table_k)
+                           for _, box, _ in configs):
+            raise ValueError("samples of one system have different cells: cannot snap the table's kD")
     table_width = bin_width if table_width is None else table_width
     chi, S, counts, kmean, chi_table, table_counts = [], [], [], [], [], []
     bragg_rows = []
@@ -191,10 +199,13 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
         data["chi_table"] = (("sample", "k_table"), np.array(chi_table),
                              _meta("D^3", f"spectral density, bins of width {table_width:g}/D centred on k_table"))
         data["k_table_count"] = (("sample", "k_table"), np.array(table_counts), _meta("1", "wavevectors in the bin"))
-        coords["k_table"] = ("k_table", table_k, _meta("1/D", "tabulated kD of the paper"))
+        coords["k_table"] = ("k_table", table_labels, _meta("1/D", "tabulated kD of the paper"))
+        data["k_table_centre"] = (("k_table",), table_k,
+                                  _meta("1/D", "centre of our bin for the tabulated kD"))
     data.update(_scalars(configs))
     attrs = {"kind": "spectral", "k_max": float(k_max), "bin_width": float(bin_width),
-             "table_width": float(table_width), "nufft_eps": float(eps)}
+             "table_width": float(table_width), "nufft_eps": float(eps),
+             "table_bins": "cubic-cell shells the labels round" if snapped else "centred on the labels"}
     if bragg is not None:
         attrs["expected_peaks"] = int(bragg)
     return xr.Dataset(data, coords=coords, attrs=attrs)
@@ -340,7 +351,8 @@ def describe(kind: str, system: str, configs: Sequence, *, first: int, seed: int
         bragg = bragg_peak_count(system, spectral["k_max"]) if system in ("fcc", "bcc") else None
         dataset = spectral_samples(configs, k_max=spectral["k_max"], bin_width=spectral["bin_width"],
                                    table_k=table_k, table_width=spectral["table_bin_width"],
-                                   eps=spectral["nufft_eps"], nthreads=nthreads, first=first, bragg=bragg)
+                                   eps=spectral["nufft_eps"], nthreads=nthreads, first=first, bragg=bragg,
+                                   snap_table=system == "equilibrium")
     elif kind == "points":
         used.update(pores, seed=seed)
         rngs = [sample_rng(sample_seed(seed, "mrj2016", f"{system}/points", k)) for k in indices]
