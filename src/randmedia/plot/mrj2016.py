@@ -501,10 +501,11 @@ def fig02(inputs, params, log):
         a.add_patch(Circle(c, 0.5, facecolor="#f4c542", edgecolor="k", lw=0.6))
         b.plot(*c, "k.", ms=4)
     # (a) phi: random point in a sphere; s: point on an interface; S2, F_sv, F_ss: pairs at distance r
-    c0 = centres[0]
+    inner = np.all((centres > 1.0) & (centres < side - 1.0), axis=1)
+    c0 = centres[inner][0]
     a.plot(*(c0 + [0.1, 0.1]), "o", color="C3", ms=3)
-    a.annotate(r"$\phi$", c0 + [0.1, 0.1], xytext=(c0[0] + 0.5, c0[1] + 0.7), fontsize=7, color="C3")
-    c1 = centres[3]
+    a.text(c0[0] + 0.15, c0[1] + 0.15, r"$\phi$", fontsize=7, color="C3")
+    c1 = centres[inner][1]
     p = c1 + 0.5 * np.array([np.cos(0.6), np.sin(0.6)])
     q = p + 1.3 * np.array([np.cos(2.2), np.sin(2.2)])
     a.plot(*np.array([p, q]).T, "--", color="C0", lw=0.9)
