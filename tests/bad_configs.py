@@ -144,6 +144,21 @@ def bad_config(mutation) -> dict:
     mutation(config)
     return config
 
+MRJ2016 = ("mrj2016",)
+
+# mrj2016: overlapping spheres, lattices, descriptors (Klatt & Torquato 2016)
+BAD_CONFIGS += [
+    ("mrj_overlapping_phi_one", _set(MRJ2016 + ("overlapping", "phi"), 1.0), "mrj2016.overlapping.phi"),
+    ("mrj_fcc_cells_one", _set(MRJ2016 + ("lattices", "fcc_cells"), 1), "mrj2016.lattices.fcc_cells"),
+    ("mrj_r_step_not_dividing_table", _set(MRJ2016 + ("descriptors", "r_step"), 0.007), "mrj2016.descriptors.r_step"),
+    ("mrj_pore_bin_not_dividing_radius", _set(MRJ2016 + ("pores", "bin_width"), 0.003), "mrj2016.pores.bin_width"),
+    ("mrj_spectral_bin_beyond_k_max", _set(MRJ2016 + ("spectral", "bin_width"), 25.0), "mrj2016.spectral.bin_width"),
+    ("mrj_phi_B_zero", _set(MRJ2016 + ("number_variance", "phi_B"), 0.0), "mrj2016.number_variance.phi_B"),
+    ("mrj_window_step_beyond_box", _set(MRJ2016 + ("number_variance", "radius_step"), 4.0),
+     "mrj2016.number_variance.radius_step"),
+    ("mrj_missing_pores", _delete(MRJ2016 + ("pores",)), "mrj2016.pores"),
+]
+
 MRJ = ("mrj2016", "mrj")
 BAD_CONFIGS += [
     ("mrj_n_particles_small", _set(MRJ + ("mrj", "n_particles"), 20), "mrj2016.mrj.mrj.n_particles"),

@@ -280,9 +280,44 @@ def _mrj2016_jammed_checks(section: dict, config: dict) -> list[str]:
     return problems
 
 
+def _is_multiple(value: float, step: float) -> bool:
+    ratio = value / step
+    return abs(ratio - round(ratio)) < 1e-6
+
+
 def _mrj2016_checks(section: dict, config: dict) -> list[str]:
-    """mrj2016: the descriptor and output sections."""
-    return []
+    """mrj2016: overlapping spheres, lattices and the descriptor sections."""
+    import math
+
+    problems = []
+    r_step = section["descriptors"]["r_step"]
+    if not (_is_multiple(0.01, r_step) and _is_multiple(0.09, r_step)):
+        problems.append(
+            f"config key 'mrj2016.descriptors.r_step': {r_step:g} D must divide 0.01 D and 0.09 D "
+            "(every r of Tables II-III must be a grid point)")
+    if section["descriptors"]["r_max"] < 0.1:
+        problems.append("config key 'mrj2016.descriptors.r_max': must be >= 0.1 D (the grid "
+                        f"needs a few points), got {section['descriptors']['r_max']:g}")
+    pores = section["pores"]
+    if not (_is_multiple(0.5, pores["bin_width"]) and _is_multiple(0.01, pores["bin_width"])):
+        problems.append(
+            f"config key 'mrj2016.pores.bin_width': {pores['bin_width']:g} D must divide 0.01 D "
+            "and the sphere radius 0.5 D (reported r and the matrix boundary must be bin edges)")
+    spectral = section["spectral"]
+    if spectral["bin_width"] >= spectral["k_max"]:
+        problems.append(
+            f"config key 'mrj2016.spectral.bin_width': {spectral['bin_width']:g} must be < "
+            f"k_max = {spectral['k_max']:g}")
+    overlapping = section["overlapping"]
+    rho = -math.log1p(-overlapping["phi"]) / (math.pi / 6.0)
+    half_width = 0.5 * (overlapping["n_mean"] / rho) ** (1.0 / 3.0)
+    windows = section["number_variance"]
+    if windows["radius_step"] >= half_width:
+        problems.append(
+            f"config key 'mrj2016.number_variance.radius_step': {windows['radius_step']:g} D must be "
+            f"smaller than the half width {half_width:.3g} D of the overlapping-sphere box "
+            "(raise mrj2016.overlapping.n_mean or lower the step)")
+    return problems
 
 
 # --------------------------------------------------------------------------- sphere2019

@@ -1,7 +1,338 @@
-# Klatt & Torquato, PRE 94, 022152 (2016): MRJ sphere packings II.
+# Klatt & Torquato, PRE 94, 022152 (2016): MRJ sphere packings II -- descriptors,
+# comparison systems, figures and tables.
 #
-# Nothing of this paper is built yet (issue #4), so it has no targets: the
-# named targets mrj2016, mrj2016_figNN and mrj2016_tableN are added here with
-# the science that produces them, never as placeholders.
+#   generate  overlapping spheres, fcc / bcc lattices (here); the equilibrium liquid
+#             (mrj2016_equilibrium.smk: EQUILIBRIUM_SAMPLES) and the MRJ packings
+#             (mrj2016_jammed.smk: MRJ_SAMPLES, MRJ_LARGE_SAMPLES), included before.
+#   describe  per chunk of samples: correlation (Appendix A), spectral (Sec. IV),
+#             points (pore sizes, E_V, covering radius; Sec. V), windows (number
+#             variance, f_R(N); Sec. VI); then one merged file per system and kind.
+#   render    Figs. 1-13, Tables I-V, comparison.csv (+ comparison_notes.csv).
+#
+# A system with no samples in the config is left out of every descriptor, figure
+# and table that would use it.
 
-MRJ2016_TARGETS = []
+import csv
+import math
+
+MRJ2016 = config["mrj2016"]
+M_OVERLAPPING = MRJ2016["overlapping"]
+M_LATTICES = MRJ2016["lattices"]
+M_DESCRIPTORS = MRJ2016["descriptors"]
+M_SPECTRAL = MRJ2016["spectral"]
+M_PORES = MRJ2016["pores"]
+M_WINDOWS = MRJ2016["number_variance"]
+M_FIGURES = MRJ2016.get("figures", {})
+M_CHUNK = M_DESCRIPTORS["chunk_size"]
+M_RESULTS = "results/mrj2016"
+M_CONFIG = M_RESULTS + "/configs/{system}/sample{k}.nc"
+M_REFERENCE = {
+    "table2": "config/reference/mrj2016_table2_equilibrium.csv",
+    "table3": "config/reference/mrj2016_table3_mrj.csv",
+    "table4": "config/reference/mrj2016_table4_spectral_equilibrium.csv",
+    "table5": "config/reference/mrj2016_table5_spectral_mrj.csv",
+    "quoted": "config/reference/mrj2016_quoted_numbers.csv",
+}
+
+
+def _m_reference_column(path, column):
+    with open(path) as handle:
+        return [float(row[column]) for row in csv.DictReader(handle)]
+
+
+M_TABLE_K = {
+    "equilibrium": _m_reference_column(M_REFERENCE["table4"], "kD"),
+    "mrj_large": _m_reference_column(M_REFERENCE["table5"], "kD"),
+}
+
+M_SAMPLES = {
+    "overlapping": [M_CONFIG.format(system="overlapping", k=k) for k in range(M_OVERLAPPING["n_samples"])],
+    "fcc": [M_CONFIG.format(system="fcc", k=k) for k in range(M_LATTICES["n_samples"])],
+    "bcc": [M_CONFIG.format(system="bcc", k=k) for k in range(M_LATTICES["n_samples"])],
+}
+for _system, _samples in (("equilibrium", EQUILIBRIUM_SAMPLES), ("mrj", MRJ_SAMPLES),
+                          ("mrj_large", MRJ_LARGE_SAMPLES)):
+    if len(_samples) > 0:  # a config may set a system's sample count to 0 to leave it out
+        M_SAMPLES[_system] = list(_samples)
+
+#: descriptor kinds and the systems they are computed for (if present)
+M_KINDS = {
+    "correlation": ["equilibrium", "mrj", "mrj_large"],
+    "spectral": ["overlapping", "equilibrium", "mrj_large", "fcc", "bcc"],
+    "points": ["overlapping", "equilibrium", "mrj", "fcc", "bcc"],
+    "windows": ["overlapping", "equilibrium", "mrj"],
+}
+M_KIND_MODULES = {
+    "correlation": ["describe/packings.py", "describe/spectral.py"],
+    "spectral": ["describe/spectral.py"],
+    "points": ["describe/points.py"],
+    "windows": ["describe/points.py"],
+}
+
+
+def m_have(system):
+    return system in M_SAMPLES
+
+
+def m_systems(kind):
+    return [s for s in M_KINDS[kind] if m_have(s)]
+
+
+def m_n_chunks(system):
+    return math.ceil(len(M_SAMPLES[system]) / M_CHUNK)
+
+
+def m_chunk_samples(wildcards):
+    first = int(wildcards.c) * M_CHUNK
+    return M_SAMPLES[wildcards.system][first: first + M_CHUNK]
+
+
+def m_merged(system, kind):
+    return f"{M_RESULTS}/descriptors/{system}_{kind}.nc"
+
+
+def m_inputs(pairs):
+    """Named inputs {kind_system: merged file} for the (kind, system) pairs that exist."""
+    return {f"{kind}_{system}": m_merged(system, kind) for kind, system in pairs
+            if system in m_systems(kind)}
+
+
+wildcard_constraints:
+    system="|".join(["overlapping", "fcc", "bcc", "equilibrium", "mrj", "mrj_large"]),
+    lattice="fcc|bcc",
+    kind="correlation|spectral|points|windows",
+    c=r"\d+",
+
+
+# --------------------------------------------------------------------------- generate
+
+
+rule mrj2016_overlapping_samples:
+    """Overlapping spheres at phi = 0.636: Poisson centres in a periodic cube (Sec. III A), all
+    samples in one job (each from its own seeded generator; milliseconds per sample)."""
+    input:
+        package_sources("generate/spheres.py", "generate/__init__.py", "seeding.py"),
+    output:
+        M_SAMPLES["overlapping"],
+    params:
+        phi=M_OVERLAPPING["phi"],
+        n_mean=M_OVERLAPPING["n_mean"],
+        seed=config["seed"],
+    log:
+        M_RESULTS + "/logs/overlapping_samples.log",
+    threads: 1
+    script:
+        "../scripts/mrj2016/overlapping_samples.py"
+
+
+rule mrj2016_lattice_samples:
+    """fcc / bcc lattice of touching spheres, randomly translated copies (Sec. V A)."""
+    input:
+        package_sources("generate/spheres.py", "generate/__init__.py", "seeding.py"),
+    output:
+        expand(M_RESULTS + "/configs/{{lattice}}/sample{k}.nc", k=range(M_LATTICES["n_samples"])),
+    params:
+        n_cells=lambda wildcards: M_LATTICES[f"{wildcards.lattice}_cells"],
+        seed=config["seed"],
+    log:
+        M_RESULTS + "/logs/{lattice}_samples.log",
+    threads: 1
+    script:
+        "../scripts/mrj2016/lattice_samples.py"
+
+
+# --------------------------------------------------------------------------- describe
+
+
+rule mrj2016_describe_chunk:
+    """One descriptor kind of one chunk of a system's samples (per-sample values)."""
+    input:
+        samples=m_chunk_samples,
+        code=lambda wildcards: package_sources("describe/sphere_samples.py",
+                                               *M_KIND_MODULES[wildcards.kind]),
+    output:
+        M_RESULTS + "/descriptors/{system}/{kind}_chunk{c}.nc",
+    params:
+        first=lambda wildcards: int(wildcards.c) * M_CHUNK,
+        seed=config["seed"],
+        descriptors=M_DESCRIPTORS,
+        spectral=M_SPECTRAL,
+        table_k=lambda wildcards: M_TABLE_K.get(wildcards.system, []),
+        pores=M_PORES,
+        windows=M_WINDOWS,
+    log:
+        M_RESULTS + "/logs/{system}_{kind}_chunk{c}.log",
+    threads: 1
+    resources:
+        mem_mb=3000,
+    script:
+        "../scripts/mrj2016/describe_chunk.py"
+
+
+def m_describe_inputs(wildcards):
+    """The chunk files of a system with several chunks; its samples when they form one chunk
+    (then the merge job computes them itself: one job instead of two)."""
+    if m_n_chunks(wildcards.system) == 1:
+        return {"samples": M_SAMPLES[wildcards.system]}
+    return {"chunks": expand(M_RESULTS + "/descriptors/{system}/{kind}_chunk{c}.nc",
+                             system=wildcards.system, kind=wildcards.kind,
+                             c=range(m_n_chunks(wildcards.system)))}
+
+
+rule mrj2016_describe:
+    """One descriptor kind of one system: per-sample values, mean, SEM (+ Eq. 11 transform for
+    correlation; pooled number variance and its fits for windows), merged over the chunks."""
+    input:
+        unpack(m_describe_inputs),
+        code=package_sources("describe/sphere_samples.py", "describe/spectral.py", "describe/packings.py",
+                             "describe/points.py", "fit/number_variance.py"),
+    output:
+        M_RESULTS + "/descriptors/{system}_{kind}.nc",
+    params:
+        seed=config["seed"],
+        descriptors=M_DESCRIPTORS,
+        spectral=M_SPECTRAL,
+        table_k=lambda wildcards: M_TABLE_K.get(wildcards.system, []),
+        pores=M_PORES,
+        windows=M_WINDOWS,
+    log:
+        M_RESULTS + "/logs/{system}_{kind}.log",
+    threads: 1
+    resources:
+        mem_mb=3000,
+    script:
+        "../scripts/mrj2016/describe_merge.py"
+
+
+# --------------------------------------------------------------------------- render
+
+M_FIGURE_INPUTS = {
+    1: {f"config_{s}": M_CONFIG.format(system=s, k=0) for s in ("overlapping", "equilibrium", "mrj")
+        if m_have(s)},
+    2: {},
+    3: m_inputs([("correlation", "equilibrium"), ("correlation", "mrj")]),
+    4: m_inputs([("correlation", "equilibrium"), ("correlation", "mrj")]),
+    5: m_inputs([("correlation", "equilibrium"), ("correlation", "mrj")]),
+    6: m_inputs([("spectral", "equilibrium"), ("spectral", "mrj_large"),
+                 ("correlation", "equilibrium"), ("correlation", "mrj_large")]),
+    7: m_inputs([("points", s) for s in ("overlapping", "equilibrium", "mrj", "fcc", "bcc")]),
+    8: m_inputs([("points", s) for s in ("overlapping", "equilibrium", "mrj", "fcc", "bcc")]),
+    9: m_inputs([("windows", s) for s in ("overlapping", "equilibrium", "mrj")]),
+    10: m_inputs([("windows", s) for s in ("overlapping", "equilibrium", "mrj")]),
+    11: {},
+    12: m_inputs([("correlation", "equilibrium"), ("correlation", "mrj")]),
+    13: m_inputs([("correlation", "equilibrium"), ("correlation", "mrj")]),
+}
+
+
+rule mrj2016_figure:
+    """Figure NN of the paper (figNN.pdf and figNN.png)."""
+    input:
+        unpack(lambda wildcards: M_FIGURE_INPUTS[int(wildcards.nn)]),
+        code=package_sources("plot/style.py", "plot/mrj2016.py", "theory/overlapping.py",
+                             "theory/hard_spheres.py", "theory/scaled_particle.py",
+                             "describe/spectral.py", "fit/number_variance.py"),
+    output:
+        pdf=M_RESULTS + "/figures/fig{nn}.pdf",
+        png=M_RESULTS + "/figures/fig{nn}.png",
+    params:
+        overlapping_phi=M_OVERLAPPING["phi"],
+        windows=M_WINDOWS,
+        spectral=M_SPECTRAL,
+        figures=M_FIGURES,
+    log:
+        M_RESULTS + "/logs/fig{nn}.log",
+    wildcard_constraints:
+        nn="|".join(f"{n:02d}" for n in range(1, 14)),
+    script:
+        "../scripts/mrj2016/figure.py"
+
+
+M_TABLE_INPUTS = {
+    1: m_inputs([(kind, s) for kind in M_KINDS for s in M_KINDS[kind]]),
+    2: m_inputs([("correlation", "equilibrium"), ("points", "equilibrium")]),
+    3: m_inputs([("correlation", "mrj"), ("points", "mrj")]),
+    4: m_inputs([("spectral", "equilibrium")]),
+    5: m_inputs([("spectral", "mrj_large")]),
+}
+#: tables whose system exists
+M_TABLES = [1] + [n for n, system in ((2, "equilibrium"), (3, "mrj"), (4, "equilibrium"),
+                                      (5, "mrj_large")) if m_have(system)]
+
+
+rule mrj2016_table:
+    """Table N of the paper with our values (and SEM) at the paper's r/D or kD."""
+    input:
+        unpack(lambda wildcards: M_TABLE_INPUTS[int(wildcards.n)]),
+        reference=lambda wildcards: M_REFERENCE.get(f"table{wildcards.n}", M_REFERENCE["quoted"]),
+        code=package_sources("compare/mrj2016.py", "theory/overlapping.py"),
+    output:
+        M_RESULTS + "/tables/table{n}.csv",
+    params:
+        overlapping_phi=M_OVERLAPPING["phi"],
+    log:
+        M_RESULTS + "/logs/table{n}.log",
+    wildcard_constraints:
+        n="[1-5]",
+    script:
+        "../scripts/mrj2016/table.py"
+
+
+rule mrj2016_comparison:
+    """comparison.csv: every table cell and quoted number against ours (+ comparison_notes.csv)."""
+    input:
+        unpack(lambda wildcards: M_TABLE_INPUTS[1]),
+        tables=expand(M_RESULTS + "/tables/table{n}.csv", n=M_TABLES),
+        references=list(M_REFERENCE.values()),
+        equilibrium_validation=EQUILIBRIUM_TARGETS[3],
+        code=package_sources("compare/__init__.py", "compare/mrj2016.py", "theory/overlapping.py",
+                             "theory/scaled_particle.py", "generate/spheres.py"),
+    output:
+        comparison=M_RESULTS + "/comparison.csv",
+        notes=M_RESULTS + "/comparison_notes.csv",
+    params:
+        k_sigma=config["comparison"]["k_sigma"],
+        overlapping_phi=M_OVERLAPPING["phi"],
+        spectral=M_SPECTRAL,
+        windows=M_WINDOWS,
+        n_samples={system: len(samples) for system, samples in M_SAMPLES.items()},
+    log:
+        M_RESULTS + "/logs/comparison.log",
+    script:
+        "../scripts/mrj2016/comparison.py"
+
+
+M_FIGURES_OUT = [M_RESULTS + f"/figures/fig{n:02d}.{ext}" for n in range(1, 14) for ext in ("pdf", "png")]
+M_TABLES_OUT = [M_RESULTS + f"/tables/table{n}.csv" for n in M_TABLES]
+
+MRJ2016_TARGETS = (
+    M_FIGURES_OUT + M_TABLES_OUT
+    + [M_RESULTS + "/comparison.csv", M_RESULTS + "/comparison_notes.csv"]
+    + EQUILIBRIUM_TARGETS
+    + JAMMED_TARGETS
+)
+
+
+rule mrj2016:
+    """Everything of mrj2016: Figs. 1-13, Tables I-V, comparison."""
+    input:
+        MRJ2016_TARGETS,
+
+
+for _n in range(1, 14):
+
+    rule:
+        name:
+            f"mrj2016_fig{_n:02d}"
+        input:
+            M_RESULTS + f"/figures/fig{_n:02d}.pdf",
+            M_RESULTS + f"/figures/fig{_n:02d}.png",
+
+
+for _n in M_TABLES:
+
+    rule:
+        name:
+            f"mrj2016_table{_n}"
+        input:
+            M_RESULTS + f"/tables/table{_n}.csv",

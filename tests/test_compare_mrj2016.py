@@ -1,0 +1,49 @@
+"""Helpers of the mrj2016 comparison: rounding margins, Gaussianity radius, lattices."""
+
+import math
+
+import numpy as np
+import pytest
+
+from randmedia.compare.mrj2016 import gaussian_radius, rounding_margin
+from randmedia.generate import spheres
+
+
+@pytest.mark.parametrize("text, margin", [("0.4148", 5e-5), ("2.135", 5e-4), ("1", 0.5), ("2.26e-1", 5e-4),
+                                          ("2.45e-5", 5e-8), ("inf", 0.0), ("0.6356", 5e-5), ("1000", 0.5)])
+def test_rounding_margin(text, margin):
+    assert rounding_margin(text) == pytest.approx(margin)
+
+
+def test_gaussian_radius():
+    R = np.arange(0.5, 4.01, 0.5)
+    skew = np.array([0.5, 0.3, 0.12, 0.05, 0.2, 0.05, 0.02, 0.01])
+    kurt = np.zeros_like(R)
+    throws = np.full(R.shape, 1000)
+    assert gaussian_radius(R, skew, kurt, throws, threshold=0.15) == 3.0
+    throws[4] = 10  # a noisy radius with few windows is ignored
+    assert gaussian_radius(R, skew, kurt, throws, threshold=0.15) == 1.5
+    assert math.isnan(gaussian_radius(R, skew + 1, kurt, throws))
+
+
+def test_lattices_of_touching_spheres():
+    for lattice, phi, z in (("fcc", math.pi / (3 * math.sqrt(2)), 12), ("bcc", math.pi * math.sqrt(3) / 8, 8)):
+        assert spheres.lattice_packing_fraction(lattice) == pytest.approx(phi)
+        x, box = spheres.lattice_spheres(lattice, 2)
+        d = np.linalg.norm(x[:, None] - x[None], axis=-1)
+        # nearest-neighbour distance D (within the cell, images aside)
+        assert d[d > 0].min() == pytest.approx(1.0)
+    assert spheres.lattice_covering_radius("bcc") == pytest.approx(math.sqrt(5 / 3) / 2)
+    assert spheres.lattice_covering_radius("fcc") == pytest.approx(1 / math.sqrt(2))
+
+
+def test_overlapping_spheres_sample():
+    rng = np.random.default_rng(0)
+    x, box = spheres.overlapping_spheres(rng, 0.636, 1000)
+    rho = spheres.overlapping_intensity(0.636)
+    assert rho == pytest.approx(-math.log(1 - 0.636) / (math.pi / 6))
+    assert box[0, 0] ** 3 * rho == pytest.approx(1000)
+    assert abs(len(x) - 1000) < 5 * math.sqrt(1000)
+    assert np.all((x >= 0) & (x < box[0, 0]))
+    x2, _ = spheres.overlapping_spheres(np.random.default_rng(0), 0.636, 1000)
+    np.testing.assert_array_equal(x, x2)
