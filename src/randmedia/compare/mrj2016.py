@@ -31,7 +31,7 @@ from decimal import Decimal
 import numpy as np
 import pandas as pd
 
-from randmedia.compare import comparison_frame, read_reference, tolerance
+from randmedia.compare import COLUMNS, comparison_frame, read_reference, tolerance
 from randmedia.io import read_dataset
 
 #: published statistical errors (upper bounds stated in the captions of Tables II, III)
@@ -244,6 +244,19 @@ class Rows:
                            "deviation_in_tolerances": (abs(ours - published) / tol
                                                        if tol > 0 and np.isfinite(ours) else math.nan),
                            "reason": "" if passed else (reason_if_failed or "not identified")})
+
+    def add_checked(self, frame: pd.DataFrame, reason_if_failed: str):
+        """Rows already compared elsewhere (the columns of ``COLUMNS``, e.g. a generator's
+        validation csv), kept as they are; their note takes as systematic margin the part of
+        the tolerance beyond k_sigma x SEM."""
+        for row in frame.to_dict("records"):
+            sem = 0.0 if not np.isfinite(row["ours_sem"]) else float(row["ours_sem"])
+            tol, deviation = float(row["tolerance"]), abs(row["ours"] - row["published"])
+            self.rows.append({key: row[key] for key in COLUMNS})
+            self.notes.append({"quantity": row["quantity"], "key": row["key"], "published_err": 0.0,
+                               "rounding": 0.0, "systematic": max(0.0, tol - self.k_sigma * sem),
+                               "deviation_in_tolerances": deviation / tol if tol > 0 and np.isfinite(deviation) else math.nan,
+                               "reason": "" if bool(row["passed"]) else reason_if_failed})
 
 
 def _phi_reason(system, corr):
@@ -501,8 +514,10 @@ def _validation_rows(rows: Rows, inputs, params):
                      systematic=bias, reason_if_failed="not identified")
 
 
-def comparison(inputs, tables, params):
-    """(comparison frame, notes frame) of every table cell, quoted number and validation row."""
+def comparison(inputs, tables, params, checked_rows: pd.DataFrame | None = None):
+    """(comparison frame, notes frame) of every table cell, quoted number and validation row;
+    ``checked_rows`` (already compared, e.g. the equilibrium liquid's pressure against its
+    equation of state) are appended as they are."""
     rows = Rows(params["k_sigma"])
     references = {2: "config/reference/mrj2016_table2_equilibrium.csv",
                   3: "config/reference/mrj2016_table3_mrj.csv",
@@ -524,4 +539,6 @@ def comparison(inputs, tables, params):
                                  float(text), math.nan, reason_if_failed=f"system {TABLE_SYSTEMS[number]} not in this workflow")
     _quoted_rows(rows, "config/reference/mrj2016_quoted_numbers.csv", inputs, params)
     _validation_rows(rows, inputs, params)
+    if checked_rows is not None:
+        rows.add_checked(checked_rows, "see the generator's validation files (results/mrj2016/validation/)")
     return comparison_frame(rows.rows), pd.DataFrame(rows.notes)
