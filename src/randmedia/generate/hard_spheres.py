@@ -61,7 +61,6 @@ after a kill.
 
 from __future__ import annotations
 
-import hashlib
 import json
 import logging
 import math
@@ -73,7 +72,7 @@ from pathlib import Path
 import numpy as np
 from numba import njit
 
-from randmedia.io import atomic_output
+from randmedia.checkpoint import checkpoint_key, load_checkpoint, save_checkpoint
 from randmedia.theory.hard_spheres import FLUID_LIMIT, ball_volume
 
 #: packing fraction of the random-sequential-addition start (well below RSA jamming)
@@ -760,31 +759,22 @@ def contact_fit(hist, n_measurements, n_particles, box_lengths, diameter, settin
 
 
 def _checkpoint_key(n, box_lengths, diameter, n_samples, settings, rng, start) -> str:
-    payload = json.dumps({"n": n, "box": np.asarray(box_lengths).tolist(), "diameter": diameter,
-                          "start": start,
-                          "n_samples": n_samples, "settings": asdict(settings),
-                          "rng": rng.bit_generator.state}, sort_keys=True, default=str)
-    return hashlib.sha256(payload.encode()).hexdigest()
+    return checkpoint_key(n=n, box=np.asarray(box_lengths).tolist(), diameter=diameter, start=start,
+                          n_samples=n_samples, settings=asdict(settings), rng=rng.bit_generator.state)
 
 
 def _save(path, key, chain: HardParticleChain) -> None:
-    with atomic_output(path) as tmp:
-        with open(tmp, "wb") as handle:
-            np.savez(handle, key=key, **chain.state())
+    save_checkpoint(path, key, chain.state())
 
 
 def _load(path, key, chain: HardParticleChain, log) -> bool:
-    path = Path(path)
-    if not path.is_file():
+    data = load_checkpoint(path, key, log)
+    if data is None:
         return False
     try:
-        with np.load(path) as data:
-            if str(data["key"]) != key:
-                log.warning("%s belongs to another chain; starting afresh", path)
-                return False
-            chain.restore(data)
-    except (OSError, ValueError, KeyError) as exc:
-        log.warning("%s is unreadable (%s); starting afresh", path, exc)
+        chain.restore(data)
+    except (KeyError, ValueError) as exc:
+        log.warning("%s is incomplete (%s); starting afresh", path, exc)
         return False
     log.info("resumed from %s: stage %s, %d sweeps, %d samples", path,
              chain.STAGES[chain.stage], chain.counters["sweeps"], len(chain.samples))

@@ -61,8 +61,6 @@ boundary) reproduces the uninterrupted run bit for bit.
 
 from __future__ import annotations
 
-import hashlib
-import json
 import logging
 import math
 import os
@@ -74,7 +72,7 @@ import numpy as np
 
 from randmedia.generate import packing_lp
 from randmedia.generate.rsa import ball_volume
-from randmedia.io import atomic_output
+from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
 from randmedia.periodic import Cell, pairs_within
 
 #: densest packing fractions (hexagonal in 2D, fcc in 3D): no packing exceeds them
@@ -421,35 +419,23 @@ def _log_progress(log, history, window_start, now, dim) -> None:
 
 def _checkpoint_key(positions, box, params, diameter) -> str:
     """Identifies a construction: its start configuration and constants."""
-    payload = json.dumps({
-        "params": asdict(params), "diameter": diameter,
-        "start": hashlib.sha256(np.ascontiguousarray(positions).tobytes()
-                                + np.ascontiguousarray(box).tobytes()).hexdigest(),
-    }, sort_keys=True)
-    return hashlib.sha256(payload.encode()).hexdigest()
+    return checkpoint_key(params=asdict(params), diameter=diameter, start=array_digest(positions, box))
 
 
 def _save_checkpoint(path, key, positions, box, history, elapsed, cpu) -> None:
-    with atomic_output(path) as tmp:
-        with open(tmp, "wb") as handle:
-            np.savez(handle, key=key, positions=positions, box=box, elapsed=elapsed, cpu=cpu,
-                     **{f"history_{k}": np.asarray(v) for k, v in history.items()})
+    save_checkpoint(path, key, {"positions": positions, "box": box, "elapsed": elapsed, "cpu": cpu,
+                                **{f"history_{k}": np.asarray(v) for k, v in history.items()}})
 
 
 def _load_checkpoint(path, key, log):
-    path = Path(path)
-    if not path.is_file():
+    data = load_checkpoint(path, key, log)
+    if data is None:
         return None
     try:
-        with np.load(path) as data:
-            if str(data["key"]) != key:
-                log.warning("%s belongs to another construction; starting afresh", path)
-                return None
-            history = {k: data[f"history_{k}"].tolist() for k in _HISTORY_KEYS + ("trust_next",)}
-            state = (data["positions"].copy(), data["box"].copy(), history, float(data["elapsed"]),
-                     float(data["cpu"]))
-    except (OSError, ValueError, KeyError) as exc:
-        log.warning("%s is unreadable (%s); starting afresh", path, exc)
+        history = {k: data[f"history_{k}"].tolist() for k in _HISTORY_KEYS + ("trust_next",)}
+        state = (data["positions"], data["box"], history, float(data["elapsed"]), float(data["cpu"]))
+    except KeyError as exc:
+        log.warning("%s lacks %s; starting afresh", path, exc)
         return None
     log.info("resumed from %s after %d LPs (phi = %.6f)", path, len(state[2]["phi"]),
              state[2]["phi"][-1] if state[2]["phi"] else float("nan"))

@@ -47,8 +47,6 @@ and resumed from; a resumed run is bit-identical to an uninterrupted one.
 
 from __future__ import annotations
 
-import hashlib
-import json
 import logging
 import math
 import os
@@ -59,7 +57,7 @@ from pathlib import Path
 import numpy as np
 from numba import njit
 
-from randmedia.io import atomic_output
+from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
 from randmedia.theory.sphere_caps import check_density, check_radius
 
 POTENTIALS = ("lj", "udd", "uddpar", "udc", "ucc")
@@ -521,13 +519,9 @@ def _run_statistics(state: dict, schedule: MCSchedule, n: int, pairs_per_sweep: 
 
 
 def _checkpoint_key(potential, radius, density, temperature, schedule, thresholds, rng) -> str:
-    payload = json.dumps({
-        "potential": asdict(potential), "R": radius, "rho": density, "T": temperature,
-        "schedule": asdict(schedule),
-        "caps": hashlib.sha256(thresholds.tobytes()).hexdigest(),
-        "rng": rng.bit_generator.state,
-    }, sort_keys=True, default=str)
-    return hashlib.sha256(payload.encode()).hexdigest()
+    return checkpoint_key(potential=asdict(potential), R=radius, rho=density, T=temperature,
+                          schedule=asdict(schedule), caps=array_digest(thresholds),
+                          rng=rng.bit_generator.state)
 
 
 _ARRAYS = ("x", "y", "z", "energy", "acceptance", "axis_counts", "frames", "drift")
@@ -535,30 +529,16 @@ _SCALARS = ("sweep", "step", "running_energy", "seconds")
 
 
 def _save_checkpoint(path, key, state, rng) -> None:
-    with atomic_output(path) as tmp:
-        with open(tmp, "wb") as handle:
-            np.savez(handle, key=key, rng_state=json.dumps(rng.bit_generator.state, default=int),
-                     **{name: state[name] for name in _ARRAYS},
-                     **{name: np.array(state[name]) for name in _SCALARS})
+    save_checkpoint(path, key, {name: state[name] for name in _ARRAYS + _SCALARS}, rng)
 
 
 def _load_checkpoint(path, key, rng, log):
-    path = Path(path)
-    if not path.is_file():
+    data = load_checkpoint(path, key, log, rng)
+    if data is None:
         return None
-    try:
-        with np.load(path) as data:
-            if str(data["key"]) != key:
-                log.warning("%s belongs to another run; starting afresh", path)
-                return None
-            state = {name: data[name].copy() for name in _ARRAYS}
-            state["sweep"] = int(data["sweep"])
-            for name in ("step", "running_energy", "seconds"):
-                state[name] = float(data[name])
-            rng_state = json.loads(str(data["rng_state"]))
-    except (OSError, ValueError, KeyError) as exc:
-        log.warning("%s is unreadable (%s); starting afresh", path, exc)
-        return None
-    rng.bit_generator.state = rng_state
+    state = {name: data[name] for name in _ARRAYS}
+    state["sweep"] = int(data["sweep"])
+    for name in ("step", "running_energy", "seconds"):
+        state[name] = float(data[name])
     log.info("resumed from %s at sweep %d", path, state["sweep"])
     return state

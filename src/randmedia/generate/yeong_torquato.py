@@ -57,8 +57,6 @@ run at the final temperature; a construction still above tolerance raises
 
 from __future__ import annotations
 
-import hashlib
-import json
 import logging
 import math
 import os
@@ -71,7 +69,7 @@ import numpy as np
 from numba import njit
 
 from randmedia.describe.two_phase import RadialBinning, periodic_autocorrelation
-from randmedia.io import atomic_output
+from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
 
 _NEIGHBOURS = np.array([[-1, 0], [1, 0], [0, -1], [0, 1]], dtype=np.int64)
 
@@ -665,35 +663,18 @@ def _complement_s2(s2_tracked: np.ndarray, phi: float) -> np.ndarray:
 
 def _checkpoint_key(phi2, side, cutoff, target, schedule, rng, scan) -> str:
     """Identifies a construction: parameters, target and the random state it started from."""
-    payload = json.dumps({
-        "phi2": phi2, "L": side, "lc": cutoff, "schedule": asdict(schedule), "scan": scan,
-        "target": hashlib.sha256(np.ascontiguousarray(target).tobytes()).hexdigest(),
-        "rng": rng.bit_generator.state,
-    }, sort_keys=True, default=str)
-    return hashlib.sha256(payload.encode()).hexdigest()
+    return checkpoint_key(phi2=phi2, L=side, lc=cutoff, schedule=asdict(schedule), scan=scan,
+                          target=array_digest(target), rng=rng.bit_generator.state)
 
 
 def _save_checkpoint(path, key, stage, image, rng) -> None:
-    with atomic_output(path) as tmp:
-        with open(tmp, "wb") as handle:
-            np.savez(handle, key=key, stage=stage, image=image,
-                     rng_state=json.dumps(rng.bit_generator.state, default=int))
+    save_checkpoint(path, key, {"stage": stage, "image": image}, rng)
 
 
 def _load_checkpoint(path, key, rng, log):
-    path = Path(path)
-    if not path.is_file():
+    data = load_checkpoint(path, key, log, rng)
+    if data is None:
         return 0, None
-    try:
-        with np.load(path) as data:
-            if str(data["key"]) != key:
-                log.warning("%s belongs to another construction; starting afresh", path)
-                return 0, None
-            state = json.loads(str(data["rng_state"]))
-            stage, image = int(data["stage"]), data["image"].copy()
-    except (OSError, ValueError, KeyError) as exc:
-        log.warning("%s is unreadable (%s); starting afresh", path, exc)
-        return 0, None
-    rng.bit_generator.state = state
+    stage, image = int(data["stage"]), data["image"]
     log.info("resumed from %s at stage %d", path, stage)
     return stage, image
