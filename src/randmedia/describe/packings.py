@@ -72,6 +72,23 @@ CORRELATION_VARIABLES = ("S2", "F_sv", "F_ss", "F_sv_two_body", "F_ss_two_body")
 # --------------------------------------------------------------------------- pair distances
 
 
+@njit(cache=True, inline="always")
+def _nearest_image_d2(frac, box, i, j):
+    """Squared distance of i and the nearest image of j by rounding fractional differences:
+    exact whenever that distance is below the half width h_w (every fractional component
+    of a vector shorter than h_w is below 1/2), which the cutoff <= h_w guarantees."""
+    f0 = frac[j, 0] - frac[i, 0]
+    f1 = frac[j, 1] - frac[i, 1]
+    f2 = frac[j, 2] - frac[i, 2]
+    f0 -= np.rint(f0)
+    f1 -= np.rint(f1)
+    f2 -= np.rint(f2)
+    x = box[0, 0] * f0 + box[0, 1] * f1 + box[0, 2] * f2
+    y = box[1, 0] * f0 + box[1, 1] * f1 + box[1, 2] * f2
+    z = box[2, 0] * f0 + box[2, 1] * f1 + box[2, 2] * f2
+    return x * x + y * y + z * z
+
+
 @njit(cache=True)
 def _count_pairs(frac, box, cutoff2):
     n = frac.shape[0]
@@ -79,16 +96,7 @@ def _count_pairs(frac, box, cutoff2):
     for i in range(n):
         c = 0
         for j in range(i + 1, n):
-            f0 = frac[j, 0] - frac[i, 0]
-            f1 = frac[j, 1] - frac[i, 1]
-            f2 = frac[j, 2] - frac[i, 2]
-            f0 -= np.rint(f0)
-            f1 -= np.rint(f1)
-            f2 -= np.rint(f2)
-            x = box[0, 0] * f0 + box[0, 1] * f1 + box[0, 2] * f2
-            y = box[1, 0] * f0 + box[1, 1] * f1 + box[1, 2] * f2
-            z = box[2, 0] * f0 + box[2, 1] * f1 + box[2, 2] * f2
-            if x * x + y * y + z * z < cutoff2:
+            if _nearest_image_d2(frac, box, i, j) < cutoff2:
                 c += 1
         counts[i] = c
     return counts
@@ -100,16 +108,7 @@ def _fill_pairs(frac, box, cutoff2, offsets, out):
     for i in range(n):
         k = offsets[i]
         for j in range(i + 1, n):
-            f0 = frac[j, 0] - frac[i, 0]
-            f1 = frac[j, 1] - frac[i, 1]
-            f2 = frac[j, 2] - frac[i, 2]
-            f0 -= np.rint(f0)
-            f1 -= np.rint(f1)
-            f2 -= np.rint(f2)
-            x = box[0, 0] * f0 + box[0, 1] * f1 + box[0, 2] * f2
-            y = box[1, 0] * f0 + box[1, 1] * f1 + box[1, 2] * f2
-            z = box[2, 0] * f0 + box[2, 1] * f1 + box[2, 2] * f2
-            d2 = x * x + y * y + z * z
+            d2 = _nearest_image_d2(frac, box, i, j)
             if d2 < cutoff2:
                 out[k] = math.sqrt(d2)
                 k += 1

@@ -91,28 +91,40 @@ def _cell_of(f, n_cells):
     return c0, c1, c2
 
 
+@njit(cache=True, inline="always")
+def _wrap_index(a, n):
+    """(periodic shift, wrapped index) of the unwrapped cell index a along an axis of n cells."""
+    shift = math.floor(a / n)
+    return shift, a - shift * n
+
+
+@njit(cache=True, inline="always")
+def _shifted_cell(box, s0, s1, s2, w0, w1, w2, n_cells, qc):
+    """Flat index of cell (w0, w1, w2) and the Cartesian offset (lattice shift s minus the
+    query qc) that turns its stored centres into displacements from the query."""
+    flat = (w0 * n_cells[1] + w1) * n_cells[2] + w2
+    sh0 = box[0, 0] * s0 + box[0, 1] * s1 + box[0, 2] * s2 - qc[0]
+    sh1 = box[1, 0] * s0 + box[1, 1] * s1 + box[1, 2] * s2 - qc[1]
+    sh2 = box[2, 0] * s0 + box[2, 1] * s1 + box[2, 2] * s2 - qc[2]
+    return flat, sh0, sh1, sh2
+
+
 @njit(cache=True)
 def _shell_min(qc, cart, start, n_cells, box, c0, c1, c2, s, best):
     """Minimum squared distance from the point qc (Cartesian) to centres in the cells at
     Chebyshev distance s from cell (c0, c1, c2); periodic images by whole-cell shifts."""
     for d0 in range(-s, s + 1):
         a0 = c0 + d0
-        s0 = math.floor(a0 / n_cells[0])
-        w0 = a0 - s0 * n_cells[0]
+        s0, w0 = _wrap_index(a0, n_cells[0])
         for d1 in range(-s, s + 1):
             a1 = c1 + d1
-            s1 = math.floor(a1 / n_cells[1])
-            w1 = a1 - s1 * n_cells[1]
+            s1, w1 = _wrap_index(a1, n_cells[1])
             for d2 in range(-s, s + 1):
                 if max(abs(d0), abs(d1), abs(d2)) != s:
                     continue
                 a2 = c2 + d2
-                s2 = math.floor(a2 / n_cells[2])
-                w2 = a2 - s2 * n_cells[2]
-                flat = (w0 * n_cells[1] + w1) * n_cells[2] + w2
-                sh0 = box[0, 0] * s0 + box[0, 1] * s1 + box[0, 2] * s2 - qc[0]
-                sh1 = box[1, 0] * s0 + box[1, 1] * s1 + box[1, 2] * s2 - qc[1]
-                sh2 = box[2, 0] * s0 + box[2, 1] * s1 + box[2, 2] * s2 - qc[2]
+                s2, w2 = _wrap_index(a2, n_cells[2])
+                flat, sh0, sh1, sh2 = _shifted_cell(box, s0, s1, s2, w0, w1, w2, n_cells, qc)
                 for p in range(start[flat], start[flat + 1]):
                     x = cart[p, 0] + sh0
                     y = cart[p, 1] + sh1
@@ -307,27 +319,21 @@ def _window_counts(queries, cart, start, n_cells, box, widths, lam_min, radii2, 
             if b0 >= r_max2:
                 continue
             a0 = c0 + d0
-            s0 = math.floor(a0 / n_cells[0])
-            w0 = a0 - s0 * n_cells[0]
+            s0, w0 = _wrap_index(a0, n_cells[0])
             for d1 in range(-e1, e1 + 1):
                 g1 = _gap(d1, t1) / n_cells[1]
                 b1 = b0 + lam_min * g1 * g1
                 if b1 >= r_max2:
                     continue
                 a1 = c1 + d1
-                s1 = math.floor(a1 / n_cells[1])
-                w1 = a1 - s1 * n_cells[1]
+                s1, w1 = _wrap_index(a1, n_cells[1])
                 for d2 in range(-e2, e2 + 1):
                     g2 = _gap(d2, t2) / n_cells[2]
                     if b1 + lam_min * g2 * g2 >= r_max2:
                         continue
                     a2 = c2 + d2
-                    s2 = math.floor(a2 / n_cells[2])
-                    w2 = a2 - s2 * n_cells[2]
-                    flat = (w0 * n_cells[1] + w1) * n_cells[2] + w2
-                    sh0 = box[0, 0] * s0 + box[0, 1] * s1 + box[0, 2] * s2 - qc[0]
-                    sh1 = box[1, 0] * s0 + box[1, 1] * s1 + box[1, 2] * s2 - qc[1]
-                    sh2 = box[2, 0] * s0 + box[2, 1] * s1 + box[2, 2] * s2 - qc[2]
+                    s2, w2 = _wrap_index(a2, n_cells[2])
+                    flat, sh0, sh1, sh2 = _shifted_cell(box, s0, s1, s2, w0, w1, w2, n_cells, qc)
                     for p in range(start[flat], start[flat + 1]):
                         x = cart[p, 0] + sh0
                         y = cart[p, 1] + sh1
