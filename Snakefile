@@ -33,3 +33,7 @@ rule all:
         DEBYE2020_TARGETS,
         MRJ2016_TARGETS,
         SPHERE2019_TARGETS,
+
+
+# every script rule lists its script's package modules as input `code` (common.smk)
+check_script_rules()

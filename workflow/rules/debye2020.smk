@@ -19,18 +19,18 @@ MEDIA_PHI2 = {f"{phi:g}": phi for phi in MEDIA["phi2"]}
 MEDIA_SAMPLE = "results/debye2020/media/phi{phi2}/sample{k}.nc"
 MEDIA_S2 = "results/debye2020/descriptors/media_phi{phi2}_S2.nc"
 
-
-wildcard_constraints:
-    phi2="|".join(re.escape(name) for name in MEDIA_PHI2),
+#: the media's {phi2} wildcard: one of the configured volume fractions
+MEDIA_PHI2_CONSTRAINT = "|".join(re.escape(name) for name in MEDIA_PHI2)
 
 
 rule debye2020_media_sample:
     """One Debye random medium (Sec. IV); checkpoints beside the output and resumes."""
     input:
-        package_sources("generate/yeong_torquato.py", "generate/__init__.py",
-                        "theory/debye.py", "describe/two_phase.py", "seeding.py"),
+        code=script_sources("../scripts/debye2020/media_sample.py"),
     output:
         MEDIA_SAMPLE,
+    wildcard_constraints:
+        phi2=MEDIA_PHI2_CONSTRAINT,
     params:
         phi2=lambda wildcards: MEDIA_PHI2[wildcards.phi2],
         L=MEDIA["L"],
@@ -51,9 +51,11 @@ rule debye2020_media_s2:
     """S2 of the constructions at one phi2 (mean, SEM) and Delta S2 per sample."""
     input:
         samples=expand(MEDIA_SAMPLE, k=range(MEDIA["n_samples"]), allow_missing=True),
-        code=package_sources("describe/two_phase.py", "theory/debye.py"),
+        code=script_sources("../scripts/debye2020/media_s2.py"),
     output:
         MEDIA_S2,
+    wildcard_constraints:
+        phi2=MEDIA_PHI2_CONSTRAINT,
     params:
         phi2=lambda wildcards: MEDIA_PHI2[wildcards.phi2],
         L=MEDIA["L"],
@@ -69,7 +71,7 @@ rule debye2020_fig01:
     """Fig. 1: one construction per volume fraction."""
     input:
         samples=expand(MEDIA_SAMPLE, phi2=MEDIA_PHI2, k=0),
-        code=package_sources("plot/style.py", "plot/debye2020.py"),
+        code=script_sources("../scripts/debye2020/fig01.py"),
     output:
         pdf="results/debye2020/figures/fig01.pdf",
         png="results/debye2020/figures/fig01.png",
@@ -85,7 +87,7 @@ rule debye2020_fig02:
     """Fig. 2: S2 of the constructions against the targets."""
     input:
         s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
-        code=package_sources("plot/style.py", "plot/debye2020.py"),
+        code=script_sources("../scripts/debye2020/fig02.py"),
     output:
         pdf="results/debye2020/figures/fig02.pdf",
         png="results/debye2020/figures/fig02.png",
@@ -101,9 +103,11 @@ rule debye2020_media_chords:
     """L(z) and p(z) of the void phase of the constructions at one phi2 (Sec. V C-D)."""
     input:
         samples=expand(MEDIA_SAMPLE, k=range(MEDIA["n_samples"]), allow_missing=True),
-        code=package_sources("describe/chords.py", "seeding.py"),
+        code=script_sources("../scripts/debye2020/chords.py"),
     output:
         MEDIA_CHORDS,
+    wildcard_constraints:
+        phi2=MEDIA_PHI2_CONSTRAINT,
     params:
         phi2=lambda wildcards: MEDIA_PHI2[wildcards.phi2],
         system=lambda wildcards: f"chords_media_phi{wildcards.phi2}",
@@ -120,7 +124,7 @@ rule debye2020_fit_lineal_path:
     """L_w of Eq. (29) per phi2 and <R^2>/<R> of Eq. (30)."""
     input:
         chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
-        code=package_sources("fit/__init__.py", "fit/debye2020.py"),
+        code=script_sources("../scripts/debye2020/fit_lineal_path.py"),
     output:
         LINEAL_FITS,
     params:
@@ -136,7 +140,7 @@ rule debye2020_fig06:
     input:
         chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
         fits=LINEAL_FITS,
-        code=package_sources("plot/style.py", "plot/debye2020.py"),
+        code=script_sources("../scripts/debye2020/fig06_07.py"),
     output:
         pdf="results/debye2020/figures/fig06.pdf",
         png="results/debye2020/figures/fig06.png",
@@ -154,7 +158,7 @@ rule debye2020_fig07:
     input:
         chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
         fits=LINEAL_FITS,
-        code=package_sources("plot/style.py", "plot/debye2020.py"),
+        code=script_sources("../scripts/debye2020/fig06_07.py"),
     output:
         pdf="results/debye2020/figures/fig07.pdf",
         png="results/debye2020/figures/fig07.png",
@@ -177,7 +181,7 @@ DISKS_CHORDS = f"results/debye2020/descriptors/overlapping_disks_phi{DISKS['phi2
 rule debye2020_overlapping_disks_image:
     """One periodic digitized image of overlapping disks (phase 2 = disks)."""
     input:
-        package_sources("generate/disks.py", "seeding.py"),
+        code=script_sources("../scripts/debye2020/overlapping_disks_image.py"),
     output:
         f"{DISKS_DIR}/sample{{k}}.nc",
     params:
@@ -196,7 +200,7 @@ rule debye2020_overlapping_disks_s2:
     """S2(r) of the void phase of every image: mean and SEM over samples."""
     input:
         samples=expand(f"{DISKS_DIR}/sample{{k}}.nc", k=range(DISKS["n_samples"])),
-        code=package_sources("describe/two_phase.py"),
+        code=script_sources("../scripts/debye2020/overlapping_disks_s2.py"),
     output:
         DISKS_S2,
     params:
@@ -213,7 +217,7 @@ rule debye2020_overlapping_disks_figure:
     """Validation figure: simulated S2 against the exact Eqs. (32)-(33)."""
     input:
         s2=DISKS_S2,
-        code=package_sources("plot/style.py", "plot/debye2020.py", "theory/overlapping.py"),
+        code=script_sources("../scripts/debye2020/overlapping_disks_figure.py"),
     output:
         pdf=DISKS_FIGURE,
         png=DISKS_FIGURE.replace(".pdf", ".png"),
@@ -231,7 +235,7 @@ rule debye2020_overlapping_disks_chords:
     """L(z), p(z) of the void phase of the overlapping-disk images (validation, Eqs. 38-39)."""
     input:
         samples=expand(f"{DISKS_DIR}/sample{{k}}.nc", k=range(DISKS["n_samples"])),
-        code=package_sources("describe/chords.py", "seeding.py"),
+        code=script_sources("../scripts/debye2020/chords.py"),
     output:
         DISKS_CHORDS,
     params:
@@ -281,22 +285,18 @@ def level_set_files(system):
             "pores": LEVEL_SET_PORES.format(system=system)}
 
 
-wildcard_constraints:
-    system="|".join(re.escape(name) for name in LEVEL_SET_SYSTEMS),
-
 
 rule debye2020_level_set:
     """F_sv, F_ss, s, Euler characteristic, wrapping (Sec. V A) and F, P, <delta> (Sec. V B) of
     one system's images, on level sets whose Gaussian width is tuned to the exact s."""
     input:
         samples=lambda wildcards: LEVEL_SET_SYSTEMS[wildcards.system]["samples"],
-        code=package_sources("describe/chords.py", "describe/surface.py", "describe/pore_size.py",
-                             "describe/percolation.py", "describe/two_phase.py", "theory/debye.py",
-                             "theory/debye_formulas.py",
-                             "theory/overlapping.py", "theory/hard_disks.py", "seeding.py"),
+        code=script_sources("../scripts/debye2020/level_set.py"),
     output:
         surface=LEVEL_SET_SURFACE,
         pores=LEVEL_SET_PORES,
+    wildcard_constraints:
+        system="|".join(re.escape(name) for name in LEVEL_SET_SYSTEMS),
     params:
         system=lambda wildcards: wildcards.system,
         target=lambda wildcards: LEVEL_SET_SYSTEMS[wildcards.system]["target"],
@@ -317,8 +317,7 @@ rule debye2020_fit_surface_pores:
     input:
         surface=[level_set_files(f"media_phi{name}")["surface"] for name in MEDIA_PHI2],
         pores=[level_set_files(f"media_phi{name}")["pores"] for name in MEDIA_PHI2],
-        code=package_sources("fit/__init__.py", "fit/debye2020.py", "theory/debye.py",
-                             "theory/debye_formulas.py"),
+        code=script_sources("../scripts/debye2020/fit_surface_pores.py"),
     output:
         SURFACE_PORE_FITS,
     params:
@@ -343,8 +342,7 @@ rule debye2020_numbers:
         surface_pore_fits=SURFACE_PORE_FITS,
         models_surface=[level_set_files(name)["surface"] for name in comparison_models()],
         models_pores=[level_set_files(name)["pores"] for name in comparison_models()],
-        code=package_sources("compare/debye2020.py", "theory/overlapping.py",
-                             "theory/scaled_particle.py"),
+        code=script_sources("../scripts/debye2020/numbers.py"),
     output:
         "results/debye2020/tables/numbers.csv",
     log:
@@ -365,7 +363,7 @@ rule debye2020_comparison:
         surface_pore_fits=SURFACE_PORE_FITS,
         hard_disks_validation=HARD_DISKS_TARGETS[3],
         quoted="config/reference/debye2020_quoted_numbers.csv",
-        code=package_sources("compare/__init__.py", "compare/debye2020.py", "theory/overlapping.py"),
+        code=script_sources("../scripts/debye2020/comparison.py"),
     output:
         "results/debye2020/comparison.csv",
     params:
@@ -396,8 +394,7 @@ rule debye2020_fig03:
     """Fig. 3: F_sv of the Debye media per phi2, with Eq. (24)."""
     input:
         surface=[files["surface"] for files in MEDIA_LEVEL_SET],
-        code=package_sources("plot/style.py", "plot/debye2020.py", "theory/debye.py",
-                             "theory/debye_formulas.py"),
+        code=script_sources("../scripts/debye2020/fig03_04.py"),
     output:
         **figure_outputs(3),
     params:
@@ -413,8 +410,7 @@ rule debye2020_fig04:
     """Fig. 4: F_ss of the Debye media per phi2, with Eq. (26)."""
     input:
         surface=[files["surface"] for files in MEDIA_LEVEL_SET],
-        code=package_sources("plot/style.py", "plot/debye2020.py", "theory/debye.py",
-                             "theory/debye_formulas.py"),
+        code=script_sources("../scripts/debye2020/fig03_04.py"),
     output:
         **figure_outputs(4),
     params:
@@ -431,8 +427,7 @@ rule debye2020_fig05:
     input:
         pores=[files["pores"] for files in MEDIA_LEVEL_SET],
         fits=SURFACE_PORE_FITS,
-        code=package_sources("plot/style.py", "plot/debye2020.py", "theory/debye.py",
-                             "theory/debye_formulas.py"),
+        code=script_sources("../scripts/debye2020/fig05.py"),
     output:
         **figure_outputs(5),
     params:
@@ -447,7 +442,7 @@ rule debye2020_fig08:
     """Fig. 8: one image of overlapping disks and one of equilibrium hard disks."""
     input:
         samples=[f"{DISKS_DIR}/sample0.nc", HARD_DISKS_SAMPLES[0]],
-        code=package_sources("plot/style.py", "plot/debye2020.py"),
+        code=script_sources("../scripts/debye2020/fig08.py"),
     output:
         **figure_outputs(8),
     params:
@@ -473,9 +468,6 @@ def section6_inputs(number):
     files["hard_surface"] = hard["surface"]
     if number == 10:
         files["hard_pores"] = hard["pores"]
-    files["code"] = package_sources("plot/style.py", "plot/debye2020.py", "theory/debye.py",
-                                    "theory/debye_formulas.py", "theory/overlapping.py",
-                                    "theory/hard_disks.py", "theory/scaled_particle.py")
     return files
 
 
@@ -486,6 +478,7 @@ rule debye2020_fig09:
     """Fig. 9: chi_V, F_sv, F_ss of the three models at the comparison phi2, against r s."""
     input:
         **section6_inputs(9),
+        code=script_sources("../scripts/debye2020/section6.py"),
     output:
         **figure_outputs(9),
     params:
@@ -501,6 +494,7 @@ rule debye2020_fig10:
     """Fig. 10: P(delta) of the three models, against delta s."""
     input:
         **section6_inputs(10),
+        code=script_sources("../scripts/debye2020/section6.py"),
     output:
         **figure_outputs(10),
     params:
@@ -516,6 +510,7 @@ rule debye2020_fig11:
     """Fig. 11: L(z) of the three models, against z s."""
     input:
         **section6_inputs(11),
+        code=script_sources("../scripts/debye2020/section6.py"),
     output:
         **figure_outputs(11),
     params:
@@ -531,6 +526,7 @@ rule debye2020_fig12:
     """Fig. 12: p(z) of the three models, against z s."""
     input:
         **section6_inputs(12),
+        code=script_sources("../scripts/debye2020/section6.py"),
     output:
         **figure_outputs(12),
     params:
@@ -546,7 +542,7 @@ rule debye2020_overlapping_disks_level_set_figure:
     """Validation figure: level-set F_sv, F_ss, F, P of overlapping disks against Eqs. (35)-(37)."""
     input:
         **level_set_files(DISKS_SYSTEM),
-        code=package_sources("plot/style.py", "plot/debye2020.py", "theory/overlapping.py"),
+        code=script_sources("../scripts/debye2020/validation_level_set.py"),
     output:
         pdf=LEVEL_SET_FIGURE,
         png=LEVEL_SET_FIGURE.replace(".pdf", ".png"),

@@ -32,8 +32,7 @@ for _chain in range(HARD_DISKS["n_chains"]):
         name:
             f"debye2020_hard_disks_chain{_chain}"
         input:
-            package_sources("generate/hard_spheres.py", "generate/disks.py",
-                            "generate/__init__.py", "theory/hard_spheres.py", "seeding.py"),
+            code=script_sources("../scripts/debye2020/hard_disks_chain.py"),
         output:
             HARD_DISKS_SAMPLES[_chain * HARD_DISKS_PER_CHAIN:(_chain + 1) * HARD_DISKS_PER_CHAIN],
         params:
@@ -59,8 +58,7 @@ rule debye2020_hard_disks_validation:
     diagnostics (acceptance, MSD between samples, digitized area fraction)."""
     input:
         samples=HARD_DISKS_SAMPLES,
-        code=package_sources("compare/hard_particles.py", "plot/hard_particles.py",
-                             "plot/style.py", "theory/hard_spheres.py", "generate/hard_spheres.py"),
+        code=script_sources("../scripts/debye2020/hard_disks_validation.py"),
     output:
         pdf=HARD_DISKS_TARGETS[0],
         png=HARD_DISKS_TARGETS[1],

@@ -62,12 +62,6 @@ M_KINDS = {
     "points": ["overlapping", "equilibrium", "mrj", "fcc", "bcc"],
     "windows": ["overlapping", "equilibrium", "mrj"],
 }
-M_KIND_MODULES = {
-    "correlation": ["describe/packings.py", "describe/spectral.py"],
-    "spectral": ["describe/spectral.py"],
-    "points": ["describe/points.py"],
-    "windows": ["describe/points.py"],
-}
 
 
 def m_have(system):
@@ -97,11 +91,9 @@ def m_inputs(pairs):
             if system in m_systems(kind)}
 
 
-wildcard_constraints:
-    system="|".join(["overlapping", "fcc", "bcc", "equilibrium", "mrj", "mrj_large"]),
-    lattice="fcc|bcc",
-    kind="correlation|spectral|points|windows",
-    c=r"\d+",
+#: {system} and {kind} of the describe rules (constrained on those rules, not globally)
+M_SYSTEM_CONSTRAINT = "|".join(["overlapping", "fcc", "bcc", "equilibrium", "mrj", "mrj_large"])
+M_KIND_CONSTRAINT = "|".join(M_KINDS)
 
 
 # --------------------------------------------------------------------------- generate
@@ -111,7 +103,7 @@ rule mrj2016_overlapping_samples:
     """Overlapping spheres at phi = 0.636: Poisson centres in a periodic cube (Sec. III A), all
     samples in one job (each from its own seeded generator; milliseconds per sample)."""
     input:
-        package_sources("generate/spheres.py", "generate/__init__.py", "seeding.py"),
+        code=script_sources("../scripts/mrj2016/overlapping_samples.py"),
     output:
         M_SAMPLES["overlapping"],
     params:
@@ -128,9 +120,11 @@ rule mrj2016_overlapping_samples:
 rule mrj2016_lattice_samples:
     """fcc / bcc lattice of touching spheres, randomly translated copies (Sec. V A)."""
     input:
-        package_sources("generate/spheres.py", "generate/__init__.py", "seeding.py"),
+        code=script_sources("../scripts/mrj2016/lattice_samples.py"),
     output:
         expand(M_RESULTS + "/configs/{{lattice}}/sample{k}.nc", k=range(M_LATTICES["n_samples"])),
+    wildcard_constraints:
+        lattice="fcc|bcc",
     params:
         n_cells=lambda wildcards: M_LATTICES[f"{wildcards.lattice}_cells"],
         seed=config["seed"],
@@ -144,22 +138,42 @@ rule mrj2016_lattice_samples:
 # --------------------------------------------------------------------------- describe
 
 
+def m_describe_settings(kind, system, merge=False):
+    """The config values a describe job of one kind uses, and nothing else (so that changing
+    another kind's keys reruns none of its jobs): keyword arguments of
+    randmedia.describe.sphere_samples.describe (and, for the merge, of summarize).
+    descriptors.chunk_size only sets how samples are split into jobs (the chunk files and
+    `first`), not any value; number_variance.fit_r_min is used by the merge alone."""
+    if kind == "correlation":
+        settings = {"descriptors": {key: value for key, value in M_DESCRIPTORS.items()
+                                    if key != "chunk_size"}}
+        if merge:  # the Eq. (11) transform runs on k <= spectral.k_max
+            settings["spectral"] = {"k_max": M_SPECTRAL["k_max"]}
+        return settings
+    if kind == "spectral":
+        return {"spectral": M_SPECTRAL, "table_k": M_TABLE_K.get(system, [])}
+    if kind == "points":
+        return {"pores": M_PORES, "seed": config["seed"]}
+    if merge:
+        return {"windows": M_WINDOWS, "seed": config["seed"]}
+    return {"windows": {key: value for key, value in M_WINDOWS.items() if key != "fit_r_min"},
+            "seed": config["seed"]}
+
+
 rule mrj2016_describe_chunk:
     """One descriptor kind of one chunk of a system's samples (per-sample values)."""
     input:
         samples=m_chunk_samples,
-        code=lambda wildcards: package_sources("describe/sphere_samples.py",
-                                               *M_KIND_MODULES[wildcards.kind]),
+        code=script_sources("../scripts/mrj2016/describe_chunk.py"),
     output:
         M_RESULTS + "/descriptors/{system}/{kind}_chunk{c}.nc",
+    wildcard_constraints:
+        system=M_SYSTEM_CONSTRAINT,
+        kind=M_KIND_CONSTRAINT,
+        c=r"\d+",
     params:
         first=lambda wildcards: int(wildcards.c) * M_CHUNK,
-        seed=config["seed"],
-        descriptors=M_DESCRIPTORS,
-        spectral=M_SPECTRAL,
-        table_k=lambda wildcards: M_TABLE_K.get(wildcards.system, []),
-        pores=M_PORES,
-        windows=M_WINDOWS,
+        settings=lambda wildcards: m_describe_settings(wildcards.kind, wildcards.system),
     log:
         M_RESULTS + "/logs/{system}_{kind}_chunk{c}.log",
     threads: 1
@@ -184,17 +198,14 @@ rule mrj2016_describe:
     correlation; pooled number variance and its fits for windows), merged over the chunks."""
     input:
         unpack(m_describe_inputs),
-        code=package_sources("describe/sphere_samples.py", "describe/spectral.py", "describe/packings.py",
-                             "describe/points.py", "fit/number_variance.py"),
+        code=script_sources("../scripts/mrj2016/describe_merge.py"),
     output:
         M_RESULTS + "/descriptors/{system}_{kind}.nc",
+    wildcard_constraints:
+        system=M_SYSTEM_CONSTRAINT,
+        kind=M_KIND_CONSTRAINT,
     params:
-        seed=config["seed"],
-        descriptors=M_DESCRIPTORS,
-        spectral=M_SPECTRAL,
-        table_k=lambda wildcards: M_TABLE_K.get(wildcards.system, []),
-        pores=M_PORES,
-        windows=M_WINDOWS,
+        settings=lambda wildcards: m_describe_settings(wildcards.kind, wildcards.system, merge=True),
     log:
         M_RESULTS + "/logs/{system}_{kind}.log",
     threads: 1
@@ -224,22 +235,36 @@ M_FIGURE_INPUTS = {
     13: m_inputs([("correlation", "equilibrium"), ("correlation", "mrj")]),
 }
 
+#: the config values each figure's function (randmedia.plot.mrj2016.FIGURES) reads: a figure
+#: gets only its own, so that e.g. figures.render_side reruns Fig. 1 alone
+_M_PHI = {"overlapping_phi": M_OVERLAPPING["phi"]}
+M_FIGURE_PARAMS = {
+    1: {"figures": M_FIGURES},
+    2: {},
+    3: _M_PHI,
+    4: _M_PHI,
+    5: _M_PHI,
+    6: {**_M_PHI, "spectral": {"k_max": M_SPECTRAL["k_max"]}},
+    7: _M_PHI,
+    8: _M_PHI,
+    9: {**_M_PHI, "windows": {"fit_r_min": M_WINDOWS["fit_r_min"]}},
+    10: {"windows": {"fit_r_min": M_WINDOWS["fit_r_min"]}},
+    11: {},
+    12: _M_PHI,
+    13: _M_PHI,
+}
+
 
 rule mrj2016_figure:
     """Figure NN of the paper (figNN.pdf and figNN.png)."""
     input:
         unpack(lambda wildcards: M_FIGURE_INPUTS[int(wildcards.nn)]),
-        code=package_sources("plot/style.py", "plot/mrj2016.py", "theory/overlapping.py",
-                             "theory/hard_spheres.py", "theory/scaled_particle.py",
-                             "describe/spectral.py", "fit/number_variance.py"),
+        code=script_sources("../scripts/mrj2016/figure.py"),
     output:
         pdf=M_RESULTS + "/figures/fig{nn}.pdf",
         png=M_RESULTS + "/figures/fig{nn}.png",
     params:
-        overlapping_phi=M_OVERLAPPING["phi"],
-        windows=M_WINDOWS,
-        spectral=M_SPECTRAL,
-        figures=M_FIGURES,
+        settings=lambda wildcards: M_FIGURE_PARAMS[int(wildcards.nn)],
     log:
         M_RESULTS + "/logs/fig{nn}.log",
     wildcard_constraints:
@@ -265,7 +290,7 @@ rule mrj2016_table:
     input:
         unpack(lambda wildcards: M_TABLE_INPUTS[int(wildcards.n)]),
         reference=lambda wildcards: M_REFERENCE.get(f"table{wildcards.n}", M_REFERENCE["quoted"]),
-        code=package_sources("compare/mrj2016.py", "theory/overlapping.py"),
+        code=script_sources("../scripts/mrj2016/table.py"),
     output:
         M_RESULTS + "/tables/table{n}.csv",
     params:
@@ -285,8 +310,7 @@ rule mrj2016_comparison:
         tables=expand(M_RESULTS + "/tables/table{n}.csv", n=M_TABLES),
         references=list(M_REFERENCE.values()),
         equilibrium_validation=EQUILIBRIUM_TARGETS[3],
-        code=package_sources("compare/__init__.py", "compare/mrj2016.py", "theory/overlapping.py",
-                             "theory/scaled_particle.py", "generate/spheres.py"),
+        code=script_sources("../scripts/mrj2016/comparison.py"),
     output:
         comparison=M_RESULTS + "/comparison.csv",
         notes=M_RESULTS + "/comparison_notes.csv",

@@ -31,9 +31,7 @@ for _chain in range(MRJ2016_EQUILIBRIUM["n_chains"]):
         name:
             f"mrj2016_equilibrium_chain{_chain}"
         input:
-            package_sources("generate/hard_spheres.py", "generate/__init__.py",
-                            "theory/hard_spheres.py", "describe/bond_order.py", "periodic.py",
-                            "seeding.py"),
+            code=script_sources("../scripts/mrj2016/equilibrium_chain.py"),
         output:
             EQUILIBRIUM_SAMPLES[_chain * EQUILIBRIUM_PER_CHAIN:(_chain + 1) * EQUILIBRIUM_PER_CHAIN],
         params:
@@ -59,8 +57,7 @@ rule mrj2016_equilibrium_validation:
     (acceptance, MSD between samples, global Q6, crystal-like fraction)."""
     input:
         samples=EQUILIBRIUM_SAMPLES,
-        code=package_sources("compare/hard_particles.py", "plot/hard_particles.py",
-                             "plot/style.py", "theory/hard_spheres.py", "generate/hard_spheres.py"),
+        code=script_sources("../scripts/mrj2016/equilibrium_validation.py"),
     output:
         pdf=EQUILIBRIUM_TARGETS[0],
         png=EQUILIBRIUM_TARGETS[1],

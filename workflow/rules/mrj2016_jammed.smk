@@ -21,10 +21,7 @@ rule mrj2016_jammed_packing:
     """One strictly jammed packing (TJ SLP from an RSA start, optionally after a fast
     soft-sphere compression); checkpoints and resumes."""
     input:
-        package_sources("generate/jammed.py", "generate/packing_lp.py", "generate/rsa.py",
-                        "generate/soft_spheres.py",
-                        "generate/__init__.py", "describe/jamming.py", "describe/bond_order.py",
-                        "periodic.py", "seeding.py"),
+        code=script_sources("../scripts/mrj2016/jammed_packing.py"),
     output:
         MRJ_PACKING,
     wildcard_constraints:
@@ -53,7 +50,7 @@ rule mrj2016_packings:
     jamming test and cost of every packing, with mean and SEM per system."""
     input:
         samples=MRJ_SAMPLES + MRJ_LARGE_SAMPLES,
-        code=package_sources("describe/jamming.py", "stats.py"),
+        code=script_sources("../scripts/mrj2016/jammed_packings.py"),
     output:
         MRJ_PACKINGS_TABLE,
     log:

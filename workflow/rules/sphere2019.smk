@@ -34,17 +34,29 @@ def sphere_descriptors(systems):
     return expand(SPHERE_DESCRIPTOR, system=systems)
 
 
+#: the keys of sphere2019.patterns each pattern reads (workflow/scripts/sphere2019/pattern.py),
+#: so that e.g. fibonacci_points reruns the Fibonacci grid alone; the grids use no seed
+SPHERE_PATTERN_KEYS = {
+    "icosahedral": ["density", "icosahedral_resolution"],
+    "fibonacci": ["density", "fibonacci_points"],
+    "uniform": ["uncorrelated_R", "uncorrelated_points", "uncorrelated_configs"],
+    "poisson": ["uncorrelated_R", "uncorrelated_points", "uncorrelated_configs",
+                "poisson_n_theta", "poisson_n_phi"],
+}
+
+
 rule sphere2019_pattern:
     """A point pattern on the sphere (Secs. III-IV, Appendix)."""
     input:
-        package_sources("generate/sphere_surface.py", "theory/sphere_caps.py", "seeding.py"),
+        code=script_sources("../scripts/sphere2019/pattern.py"),
     output:
         "results/sphere2019/configs/{system}.nc",
     wildcard_constraints:
         system="|".join(SPHERE_PATTERN_SYSTEMS),
     params:
-        patterns=SPHERE_PATTERNS,
-        seed=config["seed"],
+        patterns=lambda wildcards: {key: SPHERE_PATTERNS[key]
+                                    for key in SPHERE_PATTERN_KEYS[wildcards.system]},
+        seed=lambda wildcards: None if wildcards.system in ("icosahedral", "fibonacci") else config["seed"],
     log:
         "results/sphere2019/logs/config_{system}.log",
     threads: 1
@@ -56,8 +68,7 @@ rule sphere2019_fluid:
     """Canonical Monte Carlo of one fluid on the sphere (Sec. V); checkpoints beside the
     output and resumes."""
     input:
-        package_sources("generate/sphere_mc.py", "generate/sphere_surface.py",
-                        "theory/sphere_caps.py", "seeding.py"),
+        code=script_sources("../scripts/sphere2019/fluid.py"),
     output:
         "results/sphere2019/configs/{system}.nc",
     wildcard_constraints:
@@ -85,8 +96,7 @@ rule sphere2019_describe:
     """Number variance in caps (both window-centre variants), g2 and Eq. (4)/(5)."""
     input:
         config=SPHERE_CONFIG,
-        code=package_sources("describe/sphere_points.py", "theory/sphere_caps.py",
-                             "generate/sphere_surface.py", "seeding.py"),
+        code=script_sources("../scripts/sphere2019/describe.py"),
     output:
         SPHERE_DESCRIPTOR,
     wildcard_constraints:
@@ -105,7 +115,7 @@ rule sphere2019_fit:
     """Exponents delta of sigma^2 ~ a^delta for every system (Eq. 10, Table I)."""
     input:
         descriptors=sphere_descriptors(SPHERE_SYSTEMS),
-        code=package_sources("fit/__init__.py", "fit/power_law.py"),
+        code=script_sources("../scripts/sphere2019/fit.py"),
     output:
         SPHERE_FITS,
     params:
@@ -122,7 +132,7 @@ rule sphere2019_table1:
         fits=SPHERE_FITS,
         descriptors=sphere_descriptors(SPHERE_FLUID_SYSTEMS),
         reference="config/reference/sphere2019_table1_exponents.csv",
-        code=package_sources("compare/__init__.py", "compare/sphere2019.py"),
+        code=script_sources("../scripts/sphere2019/table1.py"),
     output:
         table="results/sphere2019/tables/table1.csv",
         runs="results/sphere2019/tables/mc_runs.csv",
@@ -136,7 +146,7 @@ rule sphere2019_comparison:
     """results/sphere2019/comparison.csv: a row per Table I entry."""
     input:
         table="results/sphere2019/tables/table1.csv",
-        code=package_sources("compare/__init__.py", "compare/sphere2019.py"),
+        code=script_sources("../scripts/sphere2019/comparison.py"),
     output:
         "results/sphere2019/comparison.csv",
     params:
@@ -151,7 +161,7 @@ rule sphere2019_comparison:
 rule sphere2019_fig01:
     """Fig. 1: the spherical-cap window."""
     input:
-        package_sources("plot/style.py", "plot/sphere2019.py"),
+        code=script_sources("../scripts/sphere2019/fig01.py"),
     output:
         **sphere_figure(1),
     log:
@@ -165,7 +175,7 @@ rule sphere2019_fig02:
     input:
         configs=expand(SPHERE_CONFIG, system=["icosahedral", "fibonacci"]),
         descriptors=sphere_descriptors(["icosahedral", "fibonacci"]),
-        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+        code=script_sources("../scripts/sphere2019/fig02.py"),
     output:
         **sphere_figure(2),
     log:
@@ -179,7 +189,7 @@ rule sphere2019_fig03:
     input:
         configs=expand(SPHERE_CONFIG, system=["poisson", "uniform"]),
         descriptors=sphere_descriptors(["poisson", "uniform"]),
-        code=package_sources("plot/style.py", "plot/sphere2019.py", "theory/sphere_caps.py"),
+        code=script_sources("../scripts/sphere2019/fig03.py"),
     output:
         **sphere_figure(3),
     log:
@@ -192,7 +202,7 @@ rule sphere2019_fig04:
     """Fig. 4: scaled number variance of the R = 15 fluids (inset: sigma^2*(a))."""
     input:
         descriptors=sphere_descriptors(SPHERE_R15),
-        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+        code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
         **sphere_figure(4),
     params:
@@ -208,7 +218,7 @@ rule sphere2019_fig05:
     """Fig. 5: scaled number variance at R = 5 for alpha = 1, 3, 6."""
     input:
         descriptors=sphere_descriptors(SPHERE_ALPHA),
-        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+        code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
         **sphere_figure(5),
     params:
@@ -224,7 +234,7 @@ rule sphere2019_fig06:
     """Fig. 6: snapshots for alpha = 1, 3, 6."""
     input:
         configs=expand(SPHERE_CONFIG, system=SPHERE_ALPHA),
-        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+        code=script_sources("../scripts/sphere2019/fig06.py"),
     output:
         **sphere_figure(6),
     log:
@@ -237,7 +247,7 @@ rule sphere2019_fig07:
     """Fig. 7: geodesic g2 for alpha = 1, 3, 6 (and LJ when configured)."""
     input:
         descriptors=sphere_descriptors(SPHERE_FIG08),
-        code=package_sources("plot/style.py", "plot/sphere2019.py"),
+        code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
         **sphere_figure(7),
     params:
@@ -253,7 +263,7 @@ rule sphere2019_fig08:
     """Fig. 8: scaled number variance from g2 by Eq. (4)."""
     input:
         descriptors=sphere_descriptors(SPHERE_FIG08),
-        code=package_sources("plot/style.py", "plot/sphere2019.py", "theory/sphere_caps.py"),
+        code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
         **sphere_figure(8),
     params:

@@ -329,15 +329,28 @@ def windows_samples(configs: Sequence, rngs: Sequence[np.random.Generator], *, r
 KINDS = ("correlation", "spectral", "points", "windows")
 
 
-def describe(kind: str, system: str, configs: Sequence, *, first: int, seed: int, descriptors: dict,
-             spectral: dict, table_k, pores: dict, windows: dict, nthreads: int = 1, log=None):
+#: the config sections (keyword arguments of :func:`describe`) each kind needs
+KIND_SETTINGS = {"correlation": ("descriptors",), "spectral": ("spectral",),
+                 "points": ("pores", "seed"), "windows": ("windows", "seed")}
+
+
+def describe(kind: str, system: str, configs: Sequence, *, first: int, seed: int | None = None,
+             descriptors: dict | None = None, spectral: dict | None = None, table_k=(),
+             pores: dict | None = None, windows: dict | None = None, nthreads: int = 1, log=None):
     """Per-sample dataset of one descriptor ``kind`` of ``configs`` (samples first, first + 1, ...)
-    of ``system``, with the config values it used. Monte Carlo kinds draw from one generator per
-    sample, seeded from (seed, "mrj2016", f"{system}/{kind}", sample index)."""
+    of ``system``, with the config values it used. Only the kind's own sections are needed
+    (:data:`KIND_SETTINGS`; ``table_k`` for spectral); the others are ignored. Monte Carlo
+    kinds draw from one generator per sample, seeded from
+    (seed, "mrj2016", f"{system}/{kind}", sample index)."""
     from randmedia.seeding import sample_rng, sample_seed
 
     if kind not in KINDS:
         raise ValueError(f"kind must be one of {KINDS}, got {kind!r}")
+    given = {"seed": seed, "descriptors": descriptors, "spectral": spectral, "pores": pores,
+             "windows": windows}
+    missing = [name for name in KIND_SETTINGS[kind] if given[name] is None]
+    if missing:
+        raise ValueError(f"describe({kind!r}) needs {missing}")
     indices = range(first, first + len(configs))
     used = {"system": system, "kind": kind, "first": first}
     if kind == "correlation":
@@ -436,7 +449,8 @@ def merge(chunks: Iterable[xr.Dataset]) -> xr.Dataset:
 K_FT_STEP = 0.02
 
 
-def summarize(chunks: Iterable[xr.Dataset], kind: str, *, spectral: dict, windows: dict) -> xr.Dataset:
+def summarize(chunks: Iterable[xr.Dataset], kind: str, *, spectral: dict | None = None,
+              windows: dict | None = None) -> xr.Dataset:
     """The merged file of one system and descriptor kind (rule mrj2016_describe).
 
     * correlation: grid trimmed to the r valid in every sample; Eq. (11)
@@ -445,7 +459,12 @@ def summarize(chunks: Iterable[xr.Dataset], kind: str, *, spectral: dict, window
       and excess kurtosis of N(R), pooled f_R(N) at R_f, and the fits
       b2 R^2 + b3 R^3 and b2 R^2 in units of lambda = rho^(-1/3) over R >= fit_r_min;
     * spectral, points: concatenation, mean and SEM.
+
+    ``spectral`` (only its ``k_max``) is needed for correlation, ``windows`` for windows.
     """
+    needed = {"correlation": ("spectral", spectral), "windows": ("windows", windows)}.get(kind)
+    if needed is not None and needed[1] is None:
+        raise ValueError(f"summarize({kind!r}) needs {needed[0]!r}")
     chunks = list(chunks)
     if chunks and kind == "correlation":
         valid = np.all([~np.isnan(c["S2"].values).any(axis=0) for c in chunks], axis=0)

@@ -14,10 +14,9 @@ paths = list(snakemake.input.samples)  # noqa: F821
 start = time.perf_counter()
 configs = [sphere_samples.load_configuration(path) for path in paths]
 log.info("%s %s: samples %d-%d", system, kind, params["first"], params["first"] + len(configs) - 1)
-dataset, used = sphere_samples.describe(
-    kind, system, configs, first=params["first"], seed=params["seed"], descriptors=params["descriptors"],
-    spectral=params["spectral"], table_k=params["table_k"], pores=params["pores"],
-    windows=params["windows"], nthreads=snakemake.threads, log=log)  # noqa: F821
+dataset, used = sphere_samples.describe(kind, system, configs, first=params["first"],
+                                        nthreads=snakemake.threads, log=log,  # noqa: F821
+                                        **params["settings"])
 elapsed = time.perf_counter() - start
 log.info("%d samples in %.1f s (%.2f s per sample)", len(configs), elapsed, elapsed / len(configs))
 dataset.attrs["sample_files"] = " ".join(paths)

@@ -11,20 +11,21 @@ from randmedia.io import read_dataset, write_dataset  # noqa: E402
 
 params = dict(snakemake.params.items())  # noqa: F821
 system, kind = snakemake.wildcards.system, snakemake.wildcards.kind  # noqa: F821
-used = {"system": system, "kind": kind, "spectral": params["spectral"], "windows": params["windows"]}
+settings = params["settings"]  # this kind's config values only
+used = {"system": system, "kind": kind, **settings}
 if "samples" in snakemake.input.keys():  # noqa: F821
     start = time.perf_counter()
     configs = [sphere_samples.load_configuration(path) for path in snakemake.input.samples]  # noqa: F821
-    chunk, used_chunk = sphere_samples.describe(
-        kind, system, configs, first=0, seed=params["seed"], descriptors=params["descriptors"],
-        spectral=params["spectral"], table_k=params["table_k"], pores=params["pores"],
-        windows=params["windows"], nthreads=snakemake.threads, log=log)  # noqa: F821
+    chunk, used_chunk = sphere_samples.describe(kind, system, configs, first=0,
+                                                nthreads=snakemake.threads, log=log,  # noqa: F821
+                                                **settings)
     chunks = [chunk]
     used.update(used_chunk)
     log.info("%d samples described in %.1f s", len(configs), time.perf_counter() - start)
 else:
     chunks = [read_dataset(path, attrs=["kind"]) for path in snakemake.input.chunks]  # noqa: F821
-dataset = sphere_samples.summarize(chunks, kind, spectral=params["spectral"], windows=params["windows"])
+dataset = sphere_samples.summarize(chunks, kind, spectral=settings.get("spectral"),
+                                   windows=settings.get("windows"))
 log.info("%s %s: %d samples merged", system, kind, dataset.sizes["sample"])
 dataset.attrs["system"] = system
 write_dataset(dataset, snakemake.output[0], rule=snakemake.rule, seed=None, config=used)  # noqa: F821

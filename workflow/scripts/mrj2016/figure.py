@@ -8,5 +8,5 @@ from randmedia.plot.style import save_figure  # noqa: E402
 
 number = int(snakemake.wildcards.nn)  # noqa: F821
 inputs = {name: path for name, path in snakemake.input.items() if name != "code"}  # noqa: F821
-fig = mrj2016.FIGURES[number](inputs, dict(snakemake.params.items()), log)  # noqa: F821
+fig = mrj2016.FIGURES[number](inputs, dict(snakemake.params.settings), log)  # noqa: F821
 save_figure(fig, snakemake.output.pdf)  # noqa: F821
