@@ -282,19 +282,3 @@ def test_summary_table_means_and_sems():
     assert mean["phi"] == pytest.approx(0.6315)
     assert sem["phi"] == pytest.approx(np.std([0.63, 0.631, 0.632, 0.633], ddof=1) / 2)
     assert ball_volume(3) == pytest.approx(np.pi / 6)
-
-
-def test_soft_sphere_precompression_then_tj():
-    """FIRE compression to phi = 0.645, overlaps removed, TJ finishes to a strictly jammed,
-    exactly isostatic packing in fewer LPs than from the RSA start."""
-    from randmedia.generate.soft_spheres import compress
-
-    start, box = random_sequential_addition(np.random.default_rng(3), 64, 0.25)
-    soft, cubic, info = compress(start, box, 0.645)
-    assert min_gap(soft, cubic) >= 0 and info["steps"] > 0
-    assert 0.58 < jammed.packing_fraction(soft, cubic) < 0.645
-    packing = jammed.jam(soft, cubic)
-    analysis = jamming.analyse(packing.positions, packing.box)
-    assert analysis.jammed and analysis.isostatic_excess == 0
-    with pytest.raises(ValueError, match="cubic"):
-        compress(start, box @ np.array([[1, 0.1, 0], [0, 1, 0], [0, 0, 1.0]]), 0.645)

@@ -254,29 +254,45 @@ def _mrj2016_equilibrium_checks(section: dict, config: dict) -> list[str]:
 
 
 def _mrj2016_jammed_checks(section: dict, config: dict) -> list[str]:
-    """mrj2016.mrj (Torquato-Jiao MRJ packings): the influence sphere must fit in the
-    cell, and the strain bounds must leave room for a translation bound."""
+    """mrj2016.mrj (MRJ packings): the LP pair cutoffs and the TJ influence sphere must fit
+    in the cell, the strain bounds must leave room for a translation bound, the final
+    displacement bound must not exceed the first, and the compression must slow down
+    before it stops."""
     import math
 
     problems = []
-    tj = section["tj"]
-    reach = 1 + tj["influence_gap"]
+    polish, lp = section["polish"], section["inflation"]
+    reach = 1 + polish["influence_gap"]
+    cutoff = 1 + 4 * math.sqrt(3) * lp["displacement_bound"]
     for system in ("mrj", "mrj_large"):
         n = section[system]["n_particles"]
         # half the side of a cubic cell at phi = 0.64, with 20 % margin for the cell's shear
         half_width = 0.8 * 0.5 * (n * math.pi / 6 / 0.64) ** (1 / 3)
-        if reach > half_width:
-            problems.append(
-                f"config key 'mrj2016.mrj.{system}.n_particles': {n} spheres give a jammed cell "
-                f"too small for the influence sphere D(1 + influence_gap) = {reach:g} D (must be "
-                f"< {half_width:.3g} D, 0.8 x half the cell side); use more spheres or a smaller "
-                "mrj2016.mrj.tj.influence_gap")
-    strain = tj["max_normal_strain"] + 2 * tj["max_shear_strain"]
+        for key, value in (("polish.influence_gap", reach),
+                           ("inflation.displacement_bound", cutoff)):
+            if value > half_width:
+                problems.append(
+                    f"config key 'mrj2016.mrj.{system}.n_particles': {n} spheres give a jammed "
+                    f"cell too small for the pair cutoff {value:.4g} D set by "
+                    f"mrj2016.mrj.{key} (must be < {half_width:.3g} D, 0.8 x half the cell "
+                    "side); use more spheres or a smaller value")
+    strain = polish["max_normal_strain"] + 2 * polish["max_shear_strain"]
     if reach * (1 - strain) <= 1:
         problems.append(
-            "config key 'mrj2016.mrj.tj.influence_gap': (1 + influence_gap)(1 - max_normal_strain "
-            f"- 2 max_shear_strain) = {reach * (1 - strain):.4g} must be > 1, or no translation "
-            "keeps pairs beyond the influence sphere apart")
+            "config key 'mrj2016.mrj.polish.influence_gap': (1 + influence_gap)(1 - "
+            f"max_normal_strain - 2 max_shear_strain) = {reach * (1 - strain):.4g} must be > 1, "
+            "or no translation keeps pairs beyond the influence sphere apart")
+    if lp["final_displacement_bound"] > lp["displacement_bound"]:
+        problems.append(
+            "config key 'mrj2016.mrj.inflation.final_displacement_bound': "
+            f"{lp['final_displacement_bound']:g} must not exceed displacement_bound "
+            f"{lp['displacement_bound']:g}")
+    compression = section["compression"]
+    if compression["target_pressure"] <= compression["slowdown_pressure"]:
+        problems.append(
+            "config key 'mrj2016.mrj.compression.target_pressure': "
+            f"{compression['target_pressure']:g} must exceed slowdown_pressure "
+            f"{compression['slowdown_pressure']:g}")
     return problems
 
 

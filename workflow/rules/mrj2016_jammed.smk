@@ -1,5 +1,6 @@
-# Klatt & Torquato, PRE 94, 022152 (2016): MRJ packings by the Torquato-Jiao
-# sequential linear programming algorithm (systems `mrj` and `mrj_large`).
+# Klatt & Torquato, PRE 94, 022152 (2016): strictly jammed MRJ packings (systems `mrj`
+# and `mrj_large`): Lubachevsky-Stillinger compression, inflation LPs in the fixed cell,
+# Torquato-Jiao LPs in a deformable cell (randmedia.generate.mrj).
 # Included before mrj2016.smk.
 #
 # Python names other rule files use:
@@ -18,8 +19,8 @@ JAMMED_TARGETS = [MRJ_PACKINGS_TABLE]
 
 
 rule mrj2016_jammed_packing:
-    """One strictly jammed packing (TJ SLP from an RSA start, optionally after a fast
-    soft-sphere compression); checkpoints and resumes."""
+    """One strictly jammed packing (compression, inflation LPs, Torquato-Jiao polish);
+    checkpoints and resumes."""
     input:
         code=script_sources("../scripts/mrj2016/jammed_packing.py"),
     output:
@@ -28,9 +29,9 @@ rule mrj2016_jammed_packing:
         system="mrj|mrj_large",
     params:
         n_particles=lambda wildcards: MRJ_JAMMED[wildcards.system]["n_particles"],
-        precompress_phi=lambda wildcards: MRJ_JAMMED[wildcards.system]["precompress_phi"],
-        initial_phi=MRJ_JAMMED["initial_phi"],
-        tj=MRJ_JAMMED["tj"],
+        compression=MRJ_JAMMED["compression"],
+        inflation=MRJ_JAMMED["inflation"],
+        polish=MRJ_JAMMED["polish"],
         contacts=MRJ_JAMMED["contacts"],
         bond_order_cutoff=MRJ_JAMMED["bond_order_cutoff"],
         checkpoint_seconds=MRJ_JAMMED["checkpoint_seconds"],

@@ -141,6 +141,19 @@ class JammedPacking:
     def phi(self) -> float:
         return packing_fraction(self.positions, self.box, self.diameter)
 
+    def construction_attrs(self) -> dict:
+        """Constants of the construction, flat, for the packing file's attributes."""
+        return {f"tj_{k}": v for k, v in asdict(self.params).items()}
+
+    def lp_history(self) -> dict:
+        """Per-LP record: stage (1 = Torquato-Jiao), phi after the LP, the LP's predicted
+        relative volume decrease -Tr epsilon, rows, solve seconds."""
+        h = self.history
+        return {"stage": np.ones(len(h["phi"]), dtype=np.int8), "phi": np.asarray(h["phi"]),
+                "predicted": -np.asarray(h["trace"], dtype=float),
+                "rows": np.asarray(h["rows"], dtype=np.int64),
+                "solve_seconds": np.asarray(h["seconds"], dtype=float)}
+
 
 def packing_fraction(positions: np.ndarray, box: np.ndarray, diameter: float = 1.0) -> float:
     positions = np.asarray(positions)
@@ -244,6 +257,7 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
         raise ConstructionError(
             f"influence sphere D(1 + delta) = {cutoff:g} exceeds the cell half width "
             f"{cell.half_width:g}: too few spheres ({n}) for this influence_gap")
+    tic = time.perf_counter()
     i, j, separation, distance = pairs_within(cell, positions, cutoff)
     matrix = packing_lp.constraint_matrix(n, i, j, separation, distance)
     ns = packing_lp.n_strain(dim)
@@ -258,6 +272,7 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     if bound.max(initial=0.0) > 1e-12 * diameter:
         raise ConstructionError(f"overlap of {bound.max():.3g} D before an LP (bug)")
     bound = np.minimum(bound, 0.0)  # round-off overlaps (< 1e-12 D) count as contacts
+    build = time.perf_counter() - tic
     try:
         solution = packing_lp.solve(cost, matrix, bound, -upper, upper, backend=params.backend,
                                     threads=threads)
@@ -272,9 +287,17 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     moved, new_box, factor = remove_overlaps(moved, new_box, diameter)
     new_box = reduce_cell(new_box)
     moved = Cell(new_box).wrap(moved)
+    at_bound = np.abs(solution.x) >= upper * (1.0 - 1e-9)
+    at_bound[upper == 0.0] = False
+    duals = np.abs(solution.col_dual) if solution.col_dual is not None else np.zeros_like(upper)
     record = {"trace": float(solution.x[:dim].sum()), "rescale": factor, "rows": len(i),
               "seconds": solution.seconds, "cpu": solution.cpu_seconds,
-              "iterations": solution.iterations}
+              "iterations": solution.iterations,
+              "at_bound": int(at_bound[ns:].sum()), "strain_at_bound": int(at_bound[:ns].sum()),
+              "bound_dual_sum": float(duals[at_bound].sum()), "build_seconds": build,
+              "ipm_iterations": solution.ipm_iterations,
+              "crossover_iterations": solution.crossover_iterations,
+              "simplex_iterations": solution.simplex_iterations}
     return moved, new_box, record
 
 
@@ -282,7 +305,8 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
 
 
 _HISTORY_KEYS = ("phi", "trace", "rescale", "rows", "seconds", "cpu", "iterations", "trust",
-                 "accepted")
+                 "accepted", "at_bound", "strain_at_bound", "bound_dual_sum", "build_seconds",
+                 "ipm_iterations", "crossover_iterations", "simplex_iterations")
 #: the construction stops when the trust factor falls below this (no step improves phi)
 MIN_TRUST = 1e-3
 
@@ -483,7 +507,7 @@ def packing_dataset(packing: JammedPacking, analysis, attrs: dict):
         "min_gap": float(gaps.min()) if gaps.size else np.nan,
         "max_contact_gap": float(network.gap.max() / packing.diameter) if network.gap.size else np.nan,
         "min_noncontact_gap": float(noncontact.min()) if noncontact.size else np.nan,
-        **{f"tj_{k}": v for k, v in asdict(packing.params).items()},
+        **packing.construction_attrs(),
         **attrs,
     }
     dataset = particle_config_dataset(packing.positions, packing.box, packing.diameter, record)
@@ -497,8 +521,18 @@ def packing_dataset(packing: JammedPacking, analysis, attrs: dict):
                                               "duals of the jamming test (0 for rattler contacts)"})
     dataset["rattler"] = (("particle",), analysis.rattler.astype(np.uint8),
                           {"units": "1", "long_name": "1 = rattler (not held by the contacts)"})
-    dataset["phi_history"] = (("lp",), np.asarray(packing.history["phi"]),
+    lps = packing.lp_history()
+    dataset["phi_history"] = (("lp",), lps["phi"],
                               {"units": "1", "long_name": "packing fraction after each LP"})
+    dataset["lp_stage"] = (("lp",), lps["stage"],
+                           {"units": "1", "long_name": "stage of the LP: 0 = inflation in the "
+                                                       "fixed cell, 1 = Torquato-Jiao (deformable cell)"})
+    dataset["lp_predicted"] = (("lp",), lps["predicted"],
+                               {"units": "1", "long_name": "first-order gain in ln(phi) the LP "
+                                                           "predicted (d (sqrt(Gamma) - 1) or -Tr epsilon)"})
+    dataset["lp_rows"] = (("lp",), lps["rows"], {"units": "1", "long_name": "constraint rows of the LP"})
+    dataset["lp_solve_seconds"] = (("lp",), lps["solve_seconds"],
+                                   {"units": "s", "long_name": "wall time of the LP solve"})
     dataset = dataset.assign_coords(
         pair=("pair", np.arange(2), {"units": "1", "long_name": "sphere of the contact"}))
     return dataset

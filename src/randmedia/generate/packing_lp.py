@@ -1,7 +1,8 @@
 """Linearized non-overlap constraints of a periodic sphere packing and their linear programs.
 
-Shared by the Torquato-Jiao construction (:mod:`randmedia.generate.jammed`) and
-the jamming test (:mod:`randmedia.describe.jamming`).
+Shared by the sequential linear programs of :mod:`randmedia.generate.jammed` (the
+fixed-cell inflation LP and the deformable-cell Torquato-Jiao LP) and the jamming test
+(:mod:`randmedia.describe.jamming`).
 
 Variables. A packing of n spheres of diameter D in the periodic cell whose
 lattice vectors are the columns of ``box`` is deformed by a symmetric strain
@@ -35,6 +36,18 @@ What the linearization leaves out: |u_ij|^2 + 2 r^T epsilon u_ij + |epsilon
 never make a linearly feasible pair overlap (the neglected squares are >= 0);
 only the cross term 2 r^T epsilon u_ij can, by at most ~ 2 rho |epsilon| |u_ij|.
 The construction removes those small overlaps by rescaling (see jammed.py).
+
+Inflation rows (fixed cell; Artiaco, Diaz Hernandez Rojas, Parisi and
+Ricci-Tersenghi, PRE 105, 055303 (2022), Eq. 2). With displacements s_i and a
+common inflation factor Gamma of the squared diameter, |r + s_j - s_i|^2 >=
+Gamma D^2 is linearized as rho^2 + 2 r.(s_j - s_i) >= Gamma D^2, i.e. after
+division by 2 rho
+
+    n.(s_j - s_i) - Gamma D^2 / (2 rho)  >=  -rho / 2 ,
+
+a row that is *conservative*: the neglected term |s_j - s_i|^2 is >= 0, so any
+feasible (s, Gamma) is free of overlaps with diameter sqrt(Gamma) D among the
+listed pairs. Variables ``[s_0, s_1, ..., Gamma]``.
 """
 
 from __future__ import annotations
@@ -48,8 +61,10 @@ import scipy.sparse as sp
 #: LP backends: HiGHS through ``highspy`` -- interior point (IPX) + crossover to a
 #: vertex (``highs-ipm``), interior point alone (``highs-ipx``: a point in the
 #: relative interior of the optimal face, strictly complementary), dual simplex
-#: (``highs-simplex``) -- and HiGHS' dual simplex through ``scipy.optimize.linprog``
-BACKENDS = ("highs-ipm", "highs-ipx", "highs-simplex", "scipy")
+#: (``highs-simplex``), the first-order primal-dual method PDLP (``highs-pdlp``: cost
+#: linear in the size, feasible only to ~1e-7) -- and HiGHS' dual simplex through
+#: ``scipy.optimize.linprog``
+BACKENDS = ("highs-ipm", "highs-ipx", "highs-simplex", "highs-pdlp", "scipy")
 
 
 class LPError(RuntimeError):
@@ -103,6 +118,28 @@ def constraint_matrix(n: int, i: np.ndarray, j: np.ndarray, separation: np.ndarr
     return sp.csr_matrix((vals.ravel(), (rows, cols.ravel())), shape=(m, ns + dim * n))
 
 
+def inflation_matrix(n: int, i: np.ndarray, j: np.ndarray, separation: np.ndarray,
+                     distance: np.ndarray, diameter: float = 1.0) -> sp.csr_matrix:
+    """Rows n.(s_j - s_i) - Gamma D^2 / (2 rho) of every pair (module docstring).
+
+    Columns: the d displacement components of each sphere, then Gamma. The right-hand
+    side is ``-distance / 2``.
+    """
+    separation = np.asarray(separation, dtype=float)
+    m, dim = separation.shape
+    normal = separation / distance[:, None]
+    cols = np.empty((m, 2 * dim + 1), dtype=np.int64)
+    vals = np.empty((m, 2 * dim + 1))
+    cols[:, :dim] = dim * i[:, None] + np.arange(dim)
+    vals[:, :dim] = -normal
+    cols[:, dim:2 * dim] = dim * j[:, None] + np.arange(dim)
+    vals[:, dim:2 * dim] = normal
+    cols[:, -1] = dim * n
+    vals[:, -1] = -diameter**2 / (2.0 * distance)
+    rows = np.repeat(np.arange(m), 2 * dim + 1)
+    return sp.csr_matrix((vals.ravel(), (rows, cols.ravel())), shape=(m, dim * n + 1))
+
+
 def gap_bound(distance: np.ndarray, diameter: float) -> np.ndarray:
     """Right-hand side (D^2 - rho^2) / (2 rho) of each pair's constraint (<= 0 without overlap)."""
     return (diameter**2 - distance**2) / (2.0 * distance)
@@ -110,7 +147,8 @@ def gap_bound(distance: np.ndarray, diameter: float) -> np.ndarray:
 
 @dataclass
 class LPSolution:
-    """Primal solution x, row duals (>= 0: force per unit pressure on each row), objective."""
+    """Primal solution x, row duals (>= 0: force per unit pressure on each row), column
+    duals (reduced costs: the price of each variable's bound), objective and cost."""
 
     x: np.ndarray
     row_dual: np.ndarray
@@ -118,6 +156,10 @@ class LPSolution:
     seconds: float
     iterations: int
     cpu_seconds: float = 0.0
+    col_dual: np.ndarray | None = None
+    ipm_iterations: int = 0
+    crossover_iterations: int = 0
+    simplex_iterations: int = 0
 
 
 def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lower: np.ndarray,
@@ -150,8 +192,10 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
     highs.setOptionValue("output_flag", False)
     highs.setOptionValue("threads", int(threads))
     if backend in ("highs-ipm", "highs-ipx"):
-        highs.setOptionValue("solver", "ipm")
+        highs.setOptionValue("solver", "ipx")
         highs.setOptionValue("run_crossover", "on" if backend == "highs-ipm" else "off")
+    elif backend == "highs-pdlp":
+        highs.setOptionValue("solver", "pdlp")
     else:
         highs.setOptionValue("solver", "simplex")
         highs.setOptionValue("simplex_strategy", 1)  # dual simplex
@@ -175,7 +219,10 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
         raise LPError(f"LP not solved to optimality: {highs.modelStatusToString(status)}")
     solution = highs.getSolution()
     info = highs.getInfo()
-    iterations = int(info.simplex_iteration_count) + int(info.ipm_iteration_count)
+    ipm, crossover = int(info.ipm_iteration_count), int(info.crossover_iteration_count)
+    simplex, pdlp = int(info.simplex_iteration_count), int(info.pdlp_iteration_count)
     return LPSolution(np.array(solution.col_value), np.array(solution.row_dual),
                       sign * float(info.objective_function_value), time.perf_counter() - tic,
-                      iterations, time.process_time() - cpu)
+                      ipm + simplex + pdlp, time.process_time() - cpu,
+                      col_dual=sign * np.array(solution.col_dual), ipm_iterations=ipm + pdlp,
+                      crossover_iterations=crossover, simplex_iterations=simplex)

@@ -1,0 +1,199 @@
+"""Maximally random jammed (MRJ) sphere packings: fast compression, then linear programs.
+
+Klatt & Torquato, PRE 94, 022152 (2016), analyse strictly jammed packings of N = 2000
+(and 10 000) monodisperse spheres at phi = 0.6356 made by the Torquato-Jiao (TJ)
+sequential-LP algorithm from dilute starts. Here the same kind of packing is made in
+three stages, each a standard method (README, mrj2016 methods, for the measurements
+behind the choice):
+
+1. **Compression** (:mod:`randmedia.generate.lubachevsky_stillinger`): event-driven MD
+   of growing spheres from a Poisson start, fast (growth rate ``growth_rate``) until the
+   reduced pressure reaches ``slowdown_pressure``, then quasi-statically (growth rate
+   proportional to 1 / pressure) until ``target_pressure``. The fast stage freezes the
+   disorder: rapid compressions jam monodisperse spheres at the "lowest typical" density
+   0.634-0.636 (Baranau & Tallarek, Soft Matter 10, 3826 (2014)), the density of the
+   paper's TJ packings, while slower ones rearrange towards 0.64 and beyond. The slow
+   stage only brings the spheres close to their jammed state (gaps ~ D / pressure).
+2. **Collective jamming in the fixed cell** (:mod:`randmedia.generate.inflation`):
+   iterated inflation LPs until no sphere of the backbone can move and no inflation is
+   left. Each step is exact (conservative constraints), so nothing is ever rejected.
+3. **Strict jamming** (:func:`randmedia.generate.jammed.jam`): TJ LPs with a deformable
+   cell (minimize Tr epsilon) and small strain bounds until the volume cannot be lowered
+   to first order: the cell's d (d + 1) / 2 strain degrees of freedom are blocked too.
+
+Starting LPs from a compressed state matters for the cost: from a dilute start the LPs
+spend hundreds of steps in a slow creep near phi ~ 0.62-0.63 whose per-step gain is set
+by the LP optimum itself, not by the step bounds (measured: README).
+
+The whole construction is deterministic given the seed; a checkpoint (at the end of the
+compression and at LP boundaries) resumes it after a kill with the same result.
+"""
+
+from __future__ import annotations
+
+import logging
+import os
+import time
+from dataclasses import asdict, dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from randmedia.checkpoint import checkpoint_key, load_checkpoint, save_checkpoint
+from randmedia.generate import inflation
+from randmedia.generate.jammed import (ConstructionError, JammedPacking, TJParameters, jam,
+                                       packing_fraction, validate_packing_input)
+from randmedia.generate.lubachevsky_stillinger import LSParameters, compress
+
+#: per-LP keys of the inflation stage kept in the packing's history
+INFLATION_HISTORY = ("phi",) + inflation.STEP_RECORD_KEYS
+
+
+@dataclass(frozen=True)
+class MRJProtocol:
+    """The three stages of the module docstring and their constants."""
+
+    compression: LSParameters = field(default_factory=LSParameters)
+    inflation: inflation.InflationParameters = field(default_factory=inflation.InflationParameters)
+    polish: TJParameters = field(default_factory=lambda: TJParameters(
+        influence_gap=0.05, max_normal_strain=1e-3, max_shear_strain=1e-3, max_lps=500))
+
+    @classmethod
+    def from_config(cls, section: dict) -> "MRJProtocol":
+        """From the config keys ``compression``, ``inflation`` and ``polish``."""
+        return cls(LSParameters(**section["compression"]),
+                   inflation.InflationParameters(**section["inflation"]),
+                   TJParameters(**section["polish"]))
+
+    def as_dict(self) -> dict:
+        return {"compression": asdict(self.compression), "inflation": asdict(self.inflation),
+                "polish": asdict(self.polish)}
+
+
+@dataclass
+class MRJPacking(JammedPacking):
+    """A strictly jammed packing and the record of all three stages."""
+
+    compression: dict = field(default_factory=dict)   # LS: phi, pressure, collisions, seconds
+    inflation_history: dict = field(default_factory=dict)
+    n_inflation_lp: int = 0
+
+    def construction_attrs(self) -> dict:
+        attrs = {f"{stage}_{k}": v for stage, values in self.params.as_dict().items()
+                 for k, v in values.items()}
+        attrs.update({f"compression_final_{k}": v for k, v in self.compression.items()})
+        attrs["n_inflation_lp"] = self.n_inflation_lp
+        attrs["n_polish_lp"] = self.n_lp - self.n_inflation_lp
+        return attrs
+
+    def lp_history(self) -> dict:
+        polish = super().lp_history()
+        h = self.inflation_history
+        m = len(h.get("phi", []))
+        return {"stage": np.r_[np.zeros(m, dtype=np.int8), polish["stage"]],
+                "phi": np.r_[np.asarray(h.get("phi", []), dtype=float), polish["phi"]],
+                "predicted": np.r_[self.positions.shape[1] * np.asarray(h.get("inflation", []), dtype=float),
+                                   polish["predicted"]],
+                "rows": np.r_[np.asarray(h.get("rows", []), dtype=np.int64), polish["rows"]],
+                "solve_seconds": np.r_[np.asarray(h.get("solve_seconds", []), dtype=float),
+                                       polish["solve_seconds"]]}
+
+
+def _key(seed: int, n: int, dim: int, protocol: MRJProtocol) -> str:
+    return checkpoint_key(seed=int(seed), n=int(n), dim=int(dim), protocol=protocol.as_dict())
+
+
+def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, dim: int = 3,
+                 checkpoint: str | os.PathLike | None = None, checkpoint_seconds: float = 120.0,
+                 log: logging.Logger | None = None, log_seconds: float = 15.0,
+                 threads: int = 1) -> MRJPacking:
+    """One strictly jammed packing of ``n`` spheres (D = 1) from ``seed`` (module docstring).
+
+    ``checkpoint``: file the state is saved to after the compression and then at LP
+    boundaries (at most every ``checkpoint_seconds``), and resumed from if it belongs to
+    the same seed, size and protocol; removed on success (the polish stage keeps its own
+    file beside it while it runs). Raises :class:`ConstructionError` if the inflation
+    LPs do not converge within ``protocol.inflation.max_lps``.
+    """
+    log = log or logging.getLogger(__name__)
+    validate_packing_input(n, 0.5, dim)
+    params = protocol.inflation
+    key = _key(seed, n, dim, protocol)
+    history = {name: [] for name in INFLATION_HISTORY}
+    state = load_checkpoint(checkpoint, key, log) if checkpoint is not None else None
+    started, cpu_started = time.perf_counter(), time.process_time()
+    if state is not None:
+        positions, box = state["positions"], state["box"]
+        history = {name: state[f"history_{name}"].tolist() for name in INFLATION_HISTORY}
+        compression = {name[len("ls_"):]: float(state[name]) for name in state if name.startswith("ls_")}
+        elapsed_before, cpu_before = float(state["elapsed"]), float(state["cpu"])
+        log.info("resumed from %s after the compression and %d inflation LPs", checkpoint,
+                 len(history["phi"]))
+    else:
+        elapsed_before = cpu_before = 0.0
+        positions, box, info = compress(np.random.default_rng(seed), n, dim, protocol.compression,
+                                        log=log, log_seconds=log_seconds)
+        compression = {name: float(info[name]) for name in
+                       ("phi", "pressure", "events", "collisions", "seconds")}
+        log.info("compression: phi = %.5f at reduced pressure %.3g after %.3g collisions "
+                 "(%.1f s)", compression["phi"], compression["pressure"],
+                 compression["collisions"], compression["seconds"])
+
+    def save():
+        if checkpoint is None:
+            return
+        save_checkpoint(checkpoint, key, {
+            "positions": positions, "box": box,
+            "elapsed": elapsed_before + time.perf_counter() - started,
+            "cpu": cpu_before + time.process_time() - cpu_started,
+            **{f"ls_{name}": value for name, value in compression.items()},
+            **{f"history_{name}": np.asarray(values, dtype=float) for name, values in history.items()}})
+
+    if state is None:
+        save()
+    last_save = last_log = time.perf_counter()
+    done = inflation.converged(history["inflation"], history["phi"], params)
+    while not done:
+        if len(history["phi"]) >= params.max_lps:
+            raise ConstructionError(
+                f"the inflation LPs did not converge within max_lps = {params.max_lps} (phi = "
+                f"{packing_fraction(positions, box):.6f}, last sqrt(Gamma) - 1 = "
+                f"{history['inflation'][-1]:.3g})")
+        bound = params.bound(history["inflation"][-1]) if history["phi"] else params.displacement_bound
+        positions, box, record = inflation.inflation_step(positions, box, bound,
+                                                          backend=params.backend, threads=threads)
+        record["phi"] = packing_fraction(positions, box)
+        for name in INFLATION_HISTORY:
+            history[name].append(record[name])
+        done = inflation.converged(history["inflation"], history["phi"], params)
+        now = time.perf_counter()
+        if now - last_log >= log_seconds or done:
+            log.info("inflation LP %d: phi = %.7f, sqrt(Gamma) - 1 = %.3g (realized %.3g), bound "
+                     "%.3g, %d rows, %d backbone spheres (%d components at the bound), solve "
+                     "%.2f s (build %.2f s)", len(history["phi"]), record["phi"],
+                     record["inflation"], record["realized"], bound, record["rows"],
+                     record["n_backbone"], record["backbone_at_bound"], record["solve_seconds"],
+                     record["build_seconds"])
+            last_log = now
+        if now - last_save >= checkpoint_seconds:
+            save()
+            last_save = now
+    save()
+    polish_checkpoint = None if checkpoint is None else \
+        Path(checkpoint).with_name(Path(checkpoint).stem + ".polish.npz")
+    packing = jam(positions, box, protocol.polish, checkpoint=polish_checkpoint,
+                  checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds,
+                  threads=threads)
+    seconds = elapsed_before + time.perf_counter() - started
+    cpu_seconds = cpu_before + time.process_time() - cpu_started
+    if checkpoint is not None:
+        Path(checkpoint).unlink(missing_ok=True)
+    n_inflation = len(history["phi"])
+    log.info("strictly jammed after %d inflation and %d TJ LPs in %.1f s (%.1f s CPU): "
+             "phi = %.6f", n_inflation, packing.n_lp, seconds, cpu_seconds, packing.phi)
+    return MRJPacking(positions=packing.positions, box=packing.box, diameter=1.0,
+                      n_lp=n_inflation + packing.n_lp, seconds=seconds, cpu_seconds=cpu_seconds,
+                      lp_seconds=float(np.sum(history["solve_seconds"])) + packing.lp_seconds,
+                      history=packing.history, params=protocol, compression=compression,
+                      inflation_history={k: np.asarray(v) for k, v in history.items()},
+                      n_inflation_lp=n_inflation)

@@ -1,0 +1,143 @@
+"""MRJ packings: inflation LPs in the fixed cell (randmedia.generate.inflation) and the
+three-stage protocol (randmedia.generate.mrj).
+
+Known answers: an inflation step never creates an overlap and realizes the inflation
+it predicts; touching fcc and bcc crystals admit no inflation (collectively jammed in
+their cells); every packing of the protocol is strictly jammed by the LP test, exactly
+isostatic (M = 3 N_b + 3 contacts among N_b non-rattlers), free of overlaps; a run
+killed and resumed from its checkpoint gives the same packing.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import pytest
+
+from randmedia.describe import bond_order, jamming
+from randmedia.generate import inflation, mrj
+from randmedia.generate.jammed import ConstructionError, packing_fraction
+from randmedia.generate.lubachevsky_stillinger import LSParameters
+from randmedia.periodic import Cell, pairs_within
+
+QUICK = mrj.MRJProtocol(compression=LSParameters(growth_rate=0.1, slowdown_pressure=80,
+                                                 target_pressure=1e4))
+
+
+def min_gap(positions, box, cutoff=1.2):
+    _, _, _, distance = pairs_within(Cell(box), positions, cutoff)
+    return distance.min() - 1.0
+
+
+@pytest.fixture(scope="module")
+def packing():
+    return mrj.make_packing(3, 120, QUICK)
+
+
+def test_inflation_step_is_exact_and_never_overlaps():
+    from randmedia.generate.rsa import random_sequential_addition
+
+    positions, box = random_sequential_addition(np.random.default_rng(2), 200, 0.3)
+    phi = packing_fraction(positions, box)
+    for bound in (0.1, 0.05, 0.01):
+        positions, box, record = inflation.inflation_step(positions, box, bound)
+        assert min_gap(positions, box, 1.5) >= -1e-12
+        assert min_gap(positions, box, 1.5) <= 1e-12  # the closest pair touches
+        new_phi = packing_fraction(positions, box)
+        assert new_phi > phi
+        # realized inflation = predicted up to the solver's round-off (conservative rows)
+        assert record["realized"] >= record["inflation"] - 1e-8
+        assert np.log(new_phi / phi) / 3 == pytest.approx(np.log1p(record["realized"]), abs=1e-12)
+        phi = new_phi
+
+
+@pytest.mark.parametrize("kind, cells", [("fcc", 3), ("bcc", 3)])
+def test_touching_crystals_admit_no_inflation(kind, cells):
+    positions, box = bond_order.cubic_lattice(kind, cells)
+    _, record = inflation.inflation_step(positions, box, 0.005)[1:]
+    assert record["inflation"] < 1e-9
+    assert inflation.converged([record["inflation"]], [0.7], inflation.InflationParameters())
+
+
+def test_convergence_by_stall():
+    params = inflation.InflationParameters(tolerance=1e-10, stall_lps=3)
+    assert not inflation.converged([1e-6] * 3, [0.6, 0.61, 0.62], params)
+    assert inflation.converged([1e-6] * 5, [0.6, 0.62, 0.62, 0.62, 0.62], params)
+    assert not inflation.converged([], [], params)
+
+
+def test_inflation_refuses_a_cutoff_beyond_the_cell():
+    positions, box = bond_order.cubic_lattice("fcc", 1)
+    with pytest.raises(ValueError, match="half width"):
+        inflation.inflation_step(positions, box, 0.1)
+
+
+@pytest.mark.parametrize("field, value", [
+    ("displacement_bound", 0.0), ("displacement_bound", 0.5), ("final_displacement_bound", 0.1),
+    ("tolerance", 0.0), ("stall_lps", 1), ("max_lps", 0), ("backend", "glpk"),
+])
+def test_bad_inflation_parameters_are_refused(field, value):
+    with pytest.raises(ValueError, match=field):
+        inflation.InflationParameters(**{field: value})
+
+
+def test_protocol_packing_is_strictly_jammed_and_isostatic(packing):
+    analysis = jamming.analyse(packing.positions, packing.box, packing.diameter)
+    assert analysis.jammed
+    assert analysis.isostatic_excess == 0
+    assert min_gap(packing.positions, packing.box) >= -1e-9
+    assert 0.62 < packing.phi < 0.65
+    assert analysis.rattler_fraction < 0.1
+    # every stage is recorded: compression, inflation LPs, TJ polish LPs
+    assert packing.compression["pressure"] >= 1e4
+    assert packing.n_inflation_lp >= 1 and packing.n_lp > packing.n_inflation_lp
+    lps = packing.lp_history()
+    assert len(lps["phi"]) == packing.n_lp
+    assert np.all(np.diff(lps["phi"][lps["stage"] == 0]) >= -1e-12)  # inflation never loses phi
+
+
+def test_same_seed_same_packing(packing):
+    again = mrj.make_packing(3, 120, QUICK)
+    np.testing.assert_array_equal(packing.positions, again.positions)
+    np.testing.assert_array_equal(packing.box, again.box)
+
+
+def test_killed_run_resumes_from_its_checkpoint(tmp_path, monkeypatch, packing):
+    """A kill after a few inflation LPs: the rerun resumes from the checkpoint (it does not
+    compress again) and ends with the same packing as the uninterrupted run."""
+    checkpoint = tmp_path / "sample.checkpoint.npz"
+    real_step = inflation.inflation_step
+    calls = {"n": 0}
+
+    def dying_step(*args, **kwargs):
+        calls["n"] += 1
+        if calls["n"] > 3:
+            raise KeyboardInterrupt("killed")
+        return real_step(*args, **kwargs)
+
+    monkeypatch.setattr(inflation, "inflation_step", dying_step)
+    with pytest.raises(KeyboardInterrupt):
+        mrj.make_packing(3, 120, QUICK, checkpoint=checkpoint, checkpoint_seconds=0.0)
+    assert checkpoint.is_file()
+    monkeypatch.setattr(inflation, "inflation_step", real_step)
+
+    def no_compression(*args, **kwargs):
+        raise AssertionError("the resumed run compressed again")
+
+    monkeypatch.setattr(mrj, "compress", no_compression)
+    resumed = mrj.make_packing(3, 120, QUICK, checkpoint=checkpoint, checkpoint_seconds=0.0)
+    np.testing.assert_array_equal(resumed.positions, packing.positions)
+    assert resumed.n_lp == packing.n_lp
+    assert not checkpoint.exists()
+
+
+def test_unconverged_inflation_fails_clearly():
+    protocol = mrj.MRJProtocol(compression=QUICK.compression,
+                               inflation=inflation.InflationParameters(max_lps=1))
+    with pytest.raises(ConstructionError, match="max_lps"):
+        mrj.make_packing(5, 120, protocol)
+
+
+def test_protocol_from_config_names_bad_keys():
+    with pytest.raises(ValueError, match="displacement_bound"):
+        mrj.MRJProtocol.from_config({"compression": {}, "polish": {},
+                                     "inflation": {"displacement_bound": -1.0}})
