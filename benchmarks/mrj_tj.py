@@ -1,107 +1,107 @@
-"""Benchmark of the Torquato-Jiao construction of MRJ packings (mrj2016).
+"""Benchmark of the MRJ packing constructions (mrj2016), old and new route in one run.
 
-Prints, from one run on this machine (CPU seconds of this process, which on a shared
-machine is a steadier measure than wall time; both are printed):
+Prints, from one run on this machine (CPU seconds of each packing's own process, which
+on a shared machine is steadier than wall time; peak memory of that process):
 
-1. LP backends on the *same* TJ LP (a packing compressed to phi ~ 0.6, where the
-   slow final creep starts): HiGHS interior point + crossover (``highs-ipm``, the
-   default), interior point alone, dual simplex (highspy) and scipy's linprog,
-   as ratios to ``highs-ipm``; and one whole small packing with ``highs-ipm``
-   against ``highs-simplex`` (different LP vertices, so different trajectories);
-2. the cost of one such LP against N (N = 250 ... ``--max-n``), a power-law fit and
-   its extrapolation to N = 10 000;
-3. with ``--paper``: one whole N = 2000 packing (time per packing, per LP, LP count).
+1. the previous route -- Torquato-Jiao LPs from a random-sequential-addition start at
+   phi = 0.25 (``randmedia.generate.jammed.jam``, its defaults) -- and the current one --
+   Lubachevsky-Stillinger compression, inflation LPs, TJ polish
+   (``randmedia.generate.mrj.make_packing``, the paper config's protocol) -- from the
+   same seeds at the sizes of ``--old-sizes``: CPU per packing, the ratio old / new, LP
+   counts, phi and the jamming test;
+2. the current route against N (``--sizes``): compression seconds, LP counts and the
+   cost per LP of each stage, total CPU, memory, and the log-log slope of the cost per
+   inflation LP against N.
 
-Usage: python benchmarks/mrj_tj.py [--max-n 1000] [--paper]
+Usage: python benchmarks/mrj_tj.py [--sizes 500,1000,2000] [--old-sizes 500] [--seeds 1]
 """
 
 from __future__ import annotations
 
 import argparse
-import time
+import json
+import subprocess
+import sys
+from pathlib import Path
 
 import numpy as np
+import yaml
 
-from randmedia.generate import jammed, packing_lp
-from randmedia.generate.rsa import random_sequential_addition
-from randmedia.periodic import Cell, pairs_within
+CONFIG = Path(__file__).resolve().parents[1] / "config" / "config.yaml"
 
-PARAMS = jammed.TJParameters()
+_CHILD = r"""
+import json, resource, sys, time
+import numpy as np
+route, n, seed, section = sys.argv[1], int(sys.argv[2]), int(sys.argv[3]), json.loads(sys.argv[4])
+from randmedia.describe import jamming
+t = time.process_time()
+if route == "old":
+    from randmedia.generate.jammed import jam
+    from randmedia.generate.rsa import random_sequential_addition
+    start, box = random_sequential_addition(np.random.default_rng(seed), n, 0.25)
+    packing = jam(start, box)
+    out = {"lps": packing.n_lp}
+else:
+    from randmedia.generate.mrj import MRJProtocol, make_packing
+    packing = make_packing(seed, n, MRJProtocol.from_config(section))
+    h = packing.inflation_history
+    polish = packing.n_lp - packing.n_inflation_lp
+    out = {"lps": packing.n_lp, "compression_s": packing.compression["seconds"],
+           "inflation_lps": packing.n_inflation_lp,
+           "inflation_s_per_lp": float(np.mean(h["solve_seconds"] + h["build_seconds"])),
+           "polish_lps": polish,
+           "polish_s_per_lp": float(np.sum(packing.history["seconds"])) / max(polish, 1)}
+cpu = time.process_time() - t
+a = jamming.analyse(packing.positions, packing.box)
+out.update(cpu=cpu, phi=packing.phi, jammed=bool(a.jammed), excess=a.isostatic_excess,
+           rattlers=a.rattler_fraction,
+           mem_mb=resource.getrusage(resource.RUSAGE_SELF).ru_maxrss / 1024)
+print("RESULT " + json.dumps(out))
+"""
 
 
-def compressed(n, phi_stop=0.6, seed=1):
-    """A TJ packing stopped at phi >= phi_stop (the start of the slow final creep)."""
-    positions, box = random_sequential_addition(np.random.default_rng(seed), n, 0.25)
-    phi = 0.0
-    while phi < phi_stop:
-        positions, box, _ = jammed.tj_step(positions, box, PARAMS)
-        phi = jammed.packing_fraction(positions, box)
-    return positions, box
-
-
-def tj_lp(positions, box):
-    n, dim = positions.shape
-    i, j, separation, distance = pairs_within(Cell(box), positions, 1 + PARAMS.influence_gap)
-    matrix = packing_lp.constraint_matrix(n, i, j, separation, distance)
-    ns = packing_lp.n_strain(dim)
-    cost = np.zeros(matrix.shape[1])
-    cost[:dim] = 1.0
-    upper = np.full(matrix.shape[1], PARAMS.translation_bound(dim))
-    upper[:ns] = PARAMS.max_normal_strain
-    upper[ns:ns + dim] = 0.0
-    return cost, matrix, packing_lp.gap_bound(distance, 1.0), -upper, upper
-
-
-def timed(function, *args, **kwargs):
-    wall, cpu = time.perf_counter(), time.process_time()
-    result = function(*args, **kwargs)
-    return result, time.perf_counter() - wall, time.process_time() - cpu
+def run(route: str, n: int, seed: int, section: dict) -> dict:
+    result = subprocess.run([sys.executable, "-c", _CHILD, route, str(n), str(seed),
+                             json.dumps(section)], capture_output=True, text=True, check=True)
+    line = [x for x in result.stdout.splitlines() if x.startswith("RESULT ")][-1]
+    return json.loads(line[len("RESULT "):])
 
 
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--max-n", type=int, default=1000)
-    parser.add_argument("--paper", action="store_true")
+    parser.add_argument("--sizes", default="500,1000,2000")
+    parser.add_argument("--old-sizes", default="500")
+    parser.add_argument("--seeds", type=int, default=1)
     args = parser.parse_args()
+    with open(CONFIG) as handle:
+        section = yaml.safe_load(handle)["mrj2016"]["mrj"]
+    section = {k: section[k] for k in ("compression", "inflation", "polish")}
 
-    print("1. LP backends on one TJ LP (N = 500, phi ~ 0.6)")
-    lp = tj_lp(*compressed(500))
-    base = None
-    for backend in packing_lp.BACKENDS:
-        solution, wall, cpu = timed(packing_lp.solve, *lp, backend=backend)
-        base = base or cpu
-        print(f"   {backend:14s} cpu {cpu:7.2f} s (wall {wall:7.2f} s), objective "
-              f"{solution.objective:.10f}, ratio to highs-ipm {cpu / base:6.1f}x")
-    start, box = random_sequential_addition(np.random.default_rng(2), 250, 0.25)
-    whole = {}
-    for backend in ("highs-ipm", "highs-simplex"):
-        packing, wall, cpu = timed(jammed.jam, start, box,
-                                   jammed.TJParameters(backend=backend))
-        whole[backend] = cpu
-        print(f"   whole N = 250 packing, {backend}: cpu {cpu:.1f} s (wall {wall:.1f} s), "
-              f"{packing.n_lp} LPs, phi = {packing.phi:.4f}")
-    print(f"   -> simplex / ipm per packing: {whole['highs-simplex'] / whole['highs-ipm']:.1f}x")
+    print("1. previous route (TJ from RSA) against the current one, same seeds")
+    for n in [int(x) for x in args.old_sizes.split(",") if x]:
+        for seed in range(1, args.seeds + 1):
+            old, new = run("old", n, seed, section), run("new", n, seed, section)
+            print(f"   N = {n:5d} seed {seed}: old {old['cpu']:7.1f} s CPU, {old['lps']:4d} LPs, "
+                  f"phi {old['phi']:.4f}, jammed {old['jammed']} | new {new['cpu']:6.1f} s, "
+                  f"{new['lps']:3d} LPs, phi {new['phi']:.4f}, jammed {new['jammed']} | "
+                  f"old / new = {old['cpu'] / new['cpu']:.1f}x")
 
-    print("2. one TJ LP (highs-ipm) against N, phi ~ 0.6")
-    sizes = [n for n in (250, 500, 1000, 2000, 4000) if n <= args.max_n]
-    costs = []
-    for n in sizes:
-        lp = tj_lp(*compressed(n))
-        _, wall, cpu = timed(packing_lp.solve, *lp, backend="highs-ipm")
-        costs.append(cpu)
-        print(f"   N = {n:5d}: {lp[1].shape[0]:6d} rows, cpu {cpu:7.2f} s (wall {wall:7.2f} s)")
-    if len(sizes) >= 2:
-        slope, intercept = np.polyfit(np.log(sizes), np.log(costs), 1)
-        for n in (2000, 10000):
-            print(f"   power law cpu ~ N^{slope:.2f}: N = {n} -> {np.exp(intercept) * n**slope:.0f} s "
-                  "per LP")
-
-    if args.paper:
-        print("3. one paper-size packing, N = 2000")
-        start, box = random_sequential_addition(np.random.default_rng(3), 2000, 0.25)
-        packing, wall, cpu = timed(jammed.jam, start, box, PARAMS)
-        print(f"   phi = {packing.phi:.5f}, {packing.n_lp} LPs, cpu {cpu:.0f} s (wall {wall:.0f} s), "
-              f"{cpu / packing.n_lp:.1f} s per LP")
+    print("2. current route against N")
+    print("       N  compress  infl LPs  s/LP  polish LPs  s/LP   total CPU   phi    jammed  "
+          "excess  rattlers  memory")
+    sizes, per_lp = [], []
+    for n in [int(x) for x in args.sizes.split(",") if x]:
+        for seed in range(1, args.seeds + 1):
+            r = run("new", n, seed, section)
+            sizes.append(n)
+            per_lp.append(r["inflation_s_per_lp"])
+            print(f"   {n:5d}  {r['compression_s']:7.1f}s  {r['inflation_lps']:8d}  "
+                  f"{r['inflation_s_per_lp']:5.2f}  {r['polish_lps']:10d}  {r['polish_s_per_lp']:5.2f}  "
+                  f"{r['cpu']:9.1f}s  {r['phi']:.4f}  {r['jammed']!s:6s}  {r['excess']:6d}  "
+                  f"{r['rattlers']:.4f}  {r['mem_mb']:6.0f} MB", flush=True)
+    if len(set(sizes)) >= 2:
+        slope = np.polyfit(np.log(sizes), np.log(per_lp), 1)[0]
+        print(f"   cost per inflation LP ~ N^{slope:.2f}")
 
 
 if __name__ == "__main__":

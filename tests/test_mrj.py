@@ -15,8 +15,9 @@ import pytest
 
 from randmedia.describe import bond_order, jamming
 from randmedia.generate import inflation, mrj
-from randmedia.generate.jammed import ConstructionError, packing_fraction
+from randmedia.generate.jammed import ConstructionError, packing_dataset, packing_fraction
 from randmedia.generate.lubachevsky_stillinger import LSParameters
+from randmedia.io import read_dataset, write_dataset
 from randmedia.periodic import Cell, pairs_within
 
 QUICK = mrj.MRJProtocol(compression=LSParameters(growth_rate=0.1, slowdown_pressure=80,
@@ -95,10 +96,22 @@ def test_protocol_packing_is_strictly_jammed_and_isostatic(packing):
     assert np.all(np.diff(lps["phi"][lps["stage"] == 0]) >= -1e-12)  # inflation never loses phi
 
 
-def test_same_seed_same_packing(packing):
+def test_same_seed_same_packing(packing, tmp_path):
+    """Same seed, same packing -- and the same data variables in the written file
+    (timings are run metadata and live in attributes, never in data variables)."""
     again = mrj.make_packing(3, 120, QUICK)
     np.testing.assert_array_equal(packing.positions, again.positions)
     np.testing.assert_array_equal(packing.box, again.box)
+    written = []
+    for k, p in enumerate((packing, again)):
+        dataset = packing_dataset(p, jamming.analyse(p.positions, p.box, p.diameter), {})
+        path = write_dataset(dataset, tmp_path / f"{k}.nc", rule="test", seed=3, config={})
+        written.append(read_dataset(path))
+    first, second = written
+    assert sorted(first.data_vars) == sorted(second.data_vars)
+    for name in first.variables:
+        np.testing.assert_array_equal(first[name].values, second[name].values, err_msg=name)
+    assert len(first.attrs["lp_solve_seconds"]) == packing.n_lp
 
 
 def test_killed_run_resumes_from_its_checkpoint(tmp_path, monkeypatch, packing):

@@ -137,11 +137,14 @@ def write_dataset(
     """Write ``ds`` to ``path`` as zlib-compressed netCDF4, atomically, with provenance.
 
     ``config`` is the set of configuration values the producing rule used; it
-    is stored as JSON text in the ``config_json`` attribute.
+    is stored as JSON text in the ``config_json`` attribute. Boolean attributes
+    are written as 0/1 (netCDF has no boolean attribute type).
     """
     _check_cf_metadata(ds)
     ds = ds.copy()
     ds.attrs.update(provenance_attrs(rule=rule, seed=seed, config=config))
+    # netCDF has no boolean attribute type: flags are written as 0/1
+    ds.attrs.update({k: int(v) for k, v in ds.attrs.items() if isinstance(v, (bool, np.bool_))})
     encoding = {
         name: {"zlib": True, "complevel": 4}
         for name in list(ds.data_vars) + list(ds.coords)

@@ -56,14 +56,15 @@ class MRJProtocol:
     compression: LSParameters = field(default_factory=LSParameters)
     inflation: inflation.InflationParameters = field(default_factory=inflation.InflationParameters)
     polish: TJParameters = field(default_factory=lambda: TJParameters(
-        influence_gap=0.05, max_normal_strain=1e-3, max_shear_strain=1e-3, max_lps=500))
+        influence_gap=0.1, max_normal_strain=3e-3, max_shear_strain=3e-3, tolerance=1e-10,
+        max_lps=500, shrink_with_trust=True))
 
     @classmethod
     def from_config(cls, section: dict) -> "MRJProtocol":
         """From the config keys ``compression``, ``inflation`` and ``polish``."""
         return cls(LSParameters(**section["compression"]),
                    inflation.InflationParameters(**section["inflation"]),
-                   TJParameters(**section["polish"]))
+                   TJParameters(**section["polish"], shrink_with_trust=True))
 
     def as_dict(self) -> dict:
         return {"compression": asdict(self.compression), "inflation": asdict(self.inflation),
