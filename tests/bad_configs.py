@@ -165,7 +165,7 @@ BAD_CONFIGS += [
     ("mrj_n_particles_cell", lambda c: (c["mrj2016"]["mrj"]["mrj_large"].update(n_particles=60),
                                         c["mrj2016"]["mrj"]["polish"].update(influence_gap=0.6)),
      "mrj2016.mrj.mrj_large.n_particles"),
-    ("mrj_n_samples_zero", _set(MRJ + ("mrj", "n_samples"), 0), "mrj2016.mrj.mrj.n_samples"),
+    ("mrj_n_samples_negative", _set(MRJ + ("mrj", "n_samples"), -1), "mrj2016.mrj.mrj.n_samples"),
     ("mrj_influence_gap_vs_strain", lambda c: c["mrj2016"]["mrj"]["polish"].update(
         influence_gap=0.02, max_normal_strain=0.01, max_shear_strain=0.01),
      "mrj2016.mrj.polish.influence_gap"),

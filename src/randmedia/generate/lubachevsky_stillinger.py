@@ -73,7 +73,7 @@ class LSParameters:
     """
 
     growth_rate: float = 0.1
-    slowdown_pressure: float = 150.0
+    slowdown_pressure: float = 50.0
     target_pressure: float = 1.0e4
     sync_every: float = 20.0
     max_events_per_sphere: float = 2.0e5
