@@ -14,6 +14,15 @@ import xarray as xr
 
 from randmedia.io import VariableSpec
 
+def refuse_invalid(what: str, checks: Mapping[str, bool], values) -> None:
+    """Raise ValueError naming every field of ``values`` whose check in ``checks`` (field
+    name -> condition that must hold) fails; the parameter classes of the generators call
+    it from ``__post_init__``."""
+    bad = [name for name, ok in checks.items() if not ok]
+    if bad:
+        raise ValueError(f"invalid {what}: {bad} ({values})")
+
+
 #: what a reader of a phase image requires (see :func:`randmedia.io.read_dataset`)
 PHASE_IMAGE = {"phase": VariableSpec(("y", "x"), "1")}
 

@@ -73,6 +73,7 @@ import numpy as np
 from numba import njit
 
 from randmedia.checkpoint import checkpoint_key, load_checkpoint, save_checkpoint
+from randmedia.generate import refuse_invalid
 from randmedia.theory.hard_spheres import FLUID_LIMIT, ball_volume
 
 #: packing fraction of the random-sequential-addition start (well below RSA jamming)
@@ -112,9 +113,7 @@ class MCSettings:
             "contact_bins": self.contact_bins >= self.contact_order + 2,
             "contact_order": 0 <= self.contact_order <= 4,
         }
-        bad = [name for name, ok in checks.items() if not ok]
-        if bad:
-            raise ValueError(f"invalid Monte Carlo settings {bad}: {asdict(self)}")
+        refuse_invalid("Monte Carlo settings", checks, self)
 
 
 # --------------------------------------------------------------------------- numba kernels

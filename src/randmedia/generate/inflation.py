@@ -47,7 +47,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from randmedia.generate import packing_lp
+from randmedia.generate import packing_lp, refuse_invalid
 from randmedia.periodic import Cell, pairs_within
 
 #: keys of the per-LP record of :func:`inflation_step`
@@ -79,9 +79,7 @@ class InflationParameters:
             "max_lps": int(self.max_lps) == self.max_lps and self.max_lps >= 1,
             "backend": self.backend in packing_lp.BACKENDS and self.backend != "scipy",
         }
-        bad = [name for name, ok in checks.items() if not ok]
-        if bad:
-            raise ValueError(f"invalid inflation-LP parameters: {bad} ({self})")
+        refuse_invalid("inflation-LP parameters", checks, self)
 
     def bound(self, inflation: float) -> float:
         """Displacement bound of the next LP after an LP that predicted ``inflation``."""

@@ -75,7 +75,7 @@ from pathlib import Path
 
 import numpy as np
 
-from randmedia.generate import packing_lp
+from randmedia.generate import packing_lp, refuse_invalid
 from randmedia.generate.rsa import ball_volume
 from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
 from randmedia.periodic import Cell, pairs_within
@@ -112,9 +112,7 @@ class TJParameters:
             "max_lps": int(self.max_lps) == self.max_lps and self.max_lps >= 1,
             "backend": self.backend in packing_lp.BACKENDS,
         }
-        bad = [name for name, ok in checks.items() if not ok]
-        if bad:
-            raise ValueError(f"invalid Torquato-Jiao parameters: {bad} ({self})")
+        refuse_invalid("Torquato-Jiao parameters", checks, self)
 
     def translation_bound(self, dim: int, diameter: float = 1.0) -> float:
         """Delta: the largest per-component displacement that keeps pairs beyond the

@@ -50,6 +50,7 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
+from randmedia.generate import refuse_invalid
 from randmedia.generate.rsa import ball_volume
 
 #: densest packing fractions (hexagonal in 2D, fcc in 3D): the spheres never outgrow them
@@ -86,9 +87,7 @@ class LSParameters:
             "sync_every": 1 <= self.sync_every <= 1e4,
             "max_events_per_sphere": self.max_events_per_sphere >= 100,
         }
-        bad = [name for name, ok in checks.items() if not ok]
-        if bad:
-            raise ValueError(f"invalid Lubachevsky-Stillinger parameters: {bad} ({self})")
+        refuse_invalid("Lubachevsky-Stillinger parameters", checks, self)
 
 
 # --------------------------------------------------------------------------- heap

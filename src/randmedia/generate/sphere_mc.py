@@ -58,6 +58,7 @@ import numpy as np
 from numba import njit
 
 from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
+from randmedia.generate import refuse_invalid
 from randmedia.theory.sphere_caps import check_density, check_radius
 
 POTENTIALS = ("lj", "udd", "uddpar", "udc", "ucc")
@@ -312,9 +313,7 @@ class MCSchedule:
             "initial_step": self.initial_step > 0,
             "chunk_sweeps": isinstance(self.chunk_sweeps, int) and self.chunk_sweeps >= 0,
         }
-        bad = [name for name, ok in checks.items() if not ok]
-        if bad:
-            raise ValueError(f"invalid Monte Carlo schedule values {bad}: {self}")
+        refuse_invalid("Monte Carlo schedule values", checks, self)
 
     @property
     def n_frames(self) -> int:

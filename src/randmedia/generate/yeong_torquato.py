@@ -70,6 +70,7 @@ from numba import njit
 
 from randmedia.describe.two_phase import RadialBinning, periodic_autocorrelation
 from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
+from randmedia.generate import refuse_invalid
 
 _NEIGHBOURS = np.array([[-1, 0], [1, 0], [0, -1], [0, 1]], dtype=np.int64)
 
@@ -100,9 +101,7 @@ class AnnealingSchedule:
             "tolerance": self.tolerance > 0,
             "max_extra_stages": self.max_extra_stages >= 0,
         }
-        bad = [name for name, ok in checks.items() if not ok]
-        if bad:
-            raise ValueError(f"invalid annealing schedule values: {bad} ({self})")
+        refuse_invalid("annealing schedule values", checks, self)
 
 
 @dataclass
