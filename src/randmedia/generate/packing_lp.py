@@ -120,24 +120,15 @@ def constraint_matrix(n: int, i: np.ndarray, j: np.ndarray, separation: np.ndarr
 
 def inflation_matrix(n: int, i: np.ndarray, j: np.ndarray, separation: np.ndarray,
                      distance: np.ndarray, diameter: float = 1.0) -> sp.csr_matrix:
-    """Rows n.(s_j - s_i) - Gamma D^2 / (2 rho) of every pair (module docstring).
+    """Rows n.(s_j - s_i) - Gamma D^2 / (2 rho) of every pair (module docstring): the
+    fixed-cell rows of :func:`constraint_matrix` plus the column of Gamma.
 
     Columns: the d displacement components of each sphere, then Gamma. The right-hand
     side is ``-distance / 2``.
     """
-    separation = np.asarray(separation, dtype=float)
-    m, dim = separation.shape
-    normal = separation / distance[:, None]
-    cols = np.empty((m, 2 * dim + 1), dtype=np.int64)
-    vals = np.empty((m, 2 * dim + 1))
-    cols[:, :dim] = dim * i[:, None] + np.arange(dim)
-    vals[:, :dim] = -normal
-    cols[:, dim:2 * dim] = dim * j[:, None] + np.arange(dim)
-    vals[:, dim:2 * dim] = normal
-    cols[:, -1] = dim * n
-    vals[:, -1] = -diameter**2 / (2.0 * distance)
-    rows = np.repeat(np.arange(m), 2 * dim + 1)
-    return sp.csr_matrix((vals.ravel(), (rows, cols.ravel())), shape=(m, dim * n + 1))
+    displacement = constraint_matrix(n, i, j, separation, distance, strain=False)
+    gamma = sp.csr_matrix((-diameter**2 / (2.0 * np.asarray(distance, dtype=float)))[:, None])
+    return sp.hstack([displacement, gamma], format="csr")
 
 
 def gap_bound(distance: np.ndarray, diameter: float) -> np.ndarray:
