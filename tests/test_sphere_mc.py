@@ -31,7 +31,16 @@ def test_normal_dipoles_reduce_to_r3_plus_coulomb_tail():
     assert np.all(general > 0)  # radial dipoles repel at every separation
 
 
-@pytest.mark.parametrize("name", ["lj", "udd", "uddpar", "udc", "ucc"])
+def test_second_reading_of_eq_12b_cubes_the_coupling():
+    """uddpar_cubed: epsilon (alpha d/r)^3 = alpha^3/r^3; alpha = 1 is the printed Eq. (12b)."""
+    r = np.linspace(0.8, 4.0, 17)
+    lj = Potential("lj", 0.0).pair_energy(r, 5.0)
+    np.testing.assert_allclose(Potential("uddpar_cubed", 3.0).pair_energy(r, 5.0), lj + 27.0 / r**3, rtol=1e-14)
+    np.testing.assert_allclose(Potential("uddpar_cubed", 1.0).pair_energy(r, 5.0),
+                               Potential("uddpar", 1.0).pair_energy(r, 5.0), rtol=1e-14)
+
+
+@pytest.mark.parametrize("name", ["lj", "udd", "uddpar", "uddpar_cubed", "udc", "ucc"])
 def test_kernel_energies_match_the_numpy_pair_sum(name):
     rng = np.random.default_rng(1)
     radius = 2.5

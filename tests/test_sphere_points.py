@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from randmedia.describe import sphere_points as sp
-from randmedia.fit.power_law import power_law_exponent, window_mean
+from randmedia.fit.power_law import power_law_exponent, window_family_exponents, window_mean
 from randmedia.generate import sphere_surface as ss
 from randmedia.theory.sphere_caps import (cap_area, cap_grid, poisson_variance, uniform_variance,
                                           variance_from_g2)
@@ -139,6 +139,26 @@ def test_power_law_fit_recovers_an_exact_exponent():
         power_law_exponent(a, a, curves, a_min=3.0, a_max=2.0)
     with pytest.raises(ValueError, match="> 0"):
         power_law_exponent(a, a - 2.0, curves, a_min=1.0, a_max=4.0)
+
+
+def test_window_family_measures_the_spread_of_the_exponent():
+    """An exact power law has no window systematic; a curve that bends (a^2 below a = 2,
+    a^1 above) gives exponents in [1, 2] that depend on the window, and windows that
+    hold < 3 points or sigma^2 <= 0 (a lattice's sigma^2(R) = 0) are skipped."""
+    a = np.linspace(5 / 60, 5, 60)
+    family = {"a_min_rho_half": [1.0, 1.5, 2.0], "a_max_over_R": [0.8, 0.9, 1.0]}
+    exact = window_family_exponents(a, 3.0 * a**1.5, rho=0.5, radius=5.0, **family)
+    assert exact.size == 9
+    np.testing.assert_allclose(exact, 1.5, atol=1e-12)
+    bent = np.where(a < 2, a**2, 2 * a)
+    deltas = window_family_exponents(a, bent, rho=0.5, radius=5.0, **family)
+    assert np.all((deltas > 1 - 1e-12) & (deltas < 2)) and np.ptp(deltas) > 0.1
+    np.testing.assert_allclose(deltas[3:], 1.0, atol=1e-12)  # windows starting above a = 2
+    lattice = 3.0 * a**1.5
+    lattice[-1] = 0.0
+    assert window_family_exponents(a, lattice, rho=0.5, radius=5.0, **family).size == 6
+    assert window_family_exponents(a, bent, rho=0.5, radius=5.0, a_min_rho_half=[5.0],
+                                   a_max_over_R=[0.8]).size == 0
 
 
 def test_bad_window_parameters_are_rejected():

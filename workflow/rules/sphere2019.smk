@@ -21,13 +21,24 @@ SPHERE_DESCRIPTOR = "results/sphere2019/descriptors/{system}.nc"
 SPHERE_FITS = "results/sphere2019/fits/exponents.nc"
 SPHERE_R15 = ["lj_R15", "udd_R15", "uddpar_a1_R15", "udc_R15", "ucc_R15"]
 SPHERE_ALPHA = ["uddpar_a1_R5", "uddpar_a3_R5", "uddpar_a6_R5"]
+# the second reading of Eq. (12b), epsilon (alpha d/r)^3 (alpha = 1 is the same system):
+# Figs. 5-8 are drawn a second time for it, as figNN_alpha_cubed
+SPHERE_ALPHA_CUBED = ["uddpar_a1_R5", "uddcubed_a3_R5", "uddcubed_a6_R5"]
 # Fig. 8 (sigma^2 from g2) also shows the LJ fluid at R = 5 when it is configured
-SPHERE_FIG08 = [s for s in ["lj_R5"] if s in SPHERE_FLUID_SYSTEMS] + SPHERE_ALPHA
+SPHERE_LJ_R5 = [s for s in ["lj_R5"] if s in SPHERE_FLUID_SYSTEMS]
+SPHERE_FIG08 = SPHERE_LJ_R5 + SPHERE_ALPHA
+SPHERE_FIG08_CUBED = SPHERE_LJ_R5 + SPHERE_ALPHA_CUBED
 SPHERE_A_MIN_PLOT = SPHERE["fit"]["a_min_rho_half"] / SPHERE_FLUIDS["density"] ** 0.5
 
 
-def sphere_figure(number):
-    return {ext: f"results/sphere2019/figures/fig{number:02d}.{ext}" for ext in ("pdf", "png")}
+def sphere_figure(number, second_reading=False):
+    """Output files of the rule of paper figure ``number``; with ``second_reading`` also
+    figNN_alpha_cubed (the same figure for the second reading of Eq. 12b)."""
+    files = {ext: f"results/sphere2019/figures/fig{number:02d}.{ext}" for ext in ("pdf", "png")}
+    if second_reading:
+        files.update({f"alpha_cubed_{ext}": f"results/sphere2019/figures/fig{number:02d}_alpha_cubed.{ext}"
+                      for ext in ("pdf", "png")})
+    return files
 
 
 def sphere_descriptors(systems):
@@ -151,7 +162,7 @@ rule sphere2019_comparison:
         "results/sphere2019/comparison.csv",
     params:
         k_sigma=config["comparison"]["k_sigma"],
-        margin=SPHERE["fit"]["exponent_margin"],
+        rounding_margin=SPHERE["fit"]["rounding_margin"],
     log:
         "results/sphere2019/logs/comparison.log",
     script:
@@ -215,12 +226,13 @@ rule sphere2019_fig04:
 
 
 rule sphere2019_fig05:
-    """Fig. 5: scaled number variance at R = 5 for alpha = 1, 3, 6."""
+    """Fig. 5: scaled number variance at R = 5 for alpha = 1, 3, 6 (both readings of Eq. 12b)."""
     input:
         descriptors=sphere_descriptors(SPHERE_ALPHA),
+        alpha_cubed=sphere_descriptors(SPHERE_ALPHA_CUBED),
         code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
-        **sphere_figure(5),
+        **sphere_figure(5, second_reading=True),
     params:
         figure="fig05_alpha",
         a_min=SPHERE_A_MIN_PLOT,
@@ -231,12 +243,13 @@ rule sphere2019_fig05:
 
 
 rule sphere2019_fig06:
-    """Fig. 6: snapshots for alpha = 1, 3, 6."""
+    """Fig. 6: snapshots for alpha = 1, 3, 6 (both readings of Eq. 12b)."""
     input:
         configs=expand(SPHERE_CONFIG, system=SPHERE_ALPHA),
+        alpha_cubed=expand(SPHERE_CONFIG, system=SPHERE_ALPHA_CUBED),
         code=script_sources("../scripts/sphere2019/fig06.py"),
     output:
-        **sphere_figure(6),
+        **sphere_figure(6, second_reading=True),
     log:
         "results/sphere2019/logs/fig06.log",
     script:
@@ -244,12 +257,13 @@ rule sphere2019_fig06:
 
 
 rule sphere2019_fig07:
-    """Fig. 7: geodesic g2 for alpha = 1, 3, 6 (and LJ when configured)."""
+    """Fig. 7: geodesic g2 for alpha = 1, 3, 6 (and LJ when configured; both readings of Eq. 12b)."""
     input:
         descriptors=sphere_descriptors(SPHERE_FIG08),
+        alpha_cubed=sphere_descriptors(SPHERE_FIG08_CUBED),
         code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
-        **sphere_figure(7),
+        **sphere_figure(7, second_reading=True),
     params:
         figure="fig07_g2",
         a_min=0.0,
@@ -260,12 +274,13 @@ rule sphere2019_fig07:
 
 
 rule sphere2019_fig08:
-    """Fig. 8: scaled number variance from g2 by Eq. (4)."""
+    """Fig. 8: scaled number variance from g2 by Eq. (4) (both readings of Eq. 12b)."""
     input:
         descriptors=sphere_descriptors(SPHERE_FIG08),
+        alpha_cubed=sphere_descriptors(SPHERE_FIG08_CUBED),
         code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
-        **sphere_figure(8),
+        **sphere_figure(8, second_reading=True),
     params:
         figure="fig08_from_g2",
         a_min=0.0,
@@ -275,7 +290,7 @@ rule sphere2019_fig08:
         "../scripts/sphere2019/fluid_figure.py"
 
 
-SPHERE2019_FIGURES = [path for n in range(1, 9) for path in sphere_figure(n).values()]
+SPHERE2019_FIGURES = [path for n in range(1, 9) for path in sphere_figure(n, n >= 5).values()]
 SPHERE2019_TARGETS = [
     "results/sphere2019/comparison.csv",
     "results/sphere2019/tables/table1.csv",

@@ -17,6 +17,15 @@ workflow states the window it used). The grid points of a cap-variance curve com
 from the same configurations and are correlated, so chi^2/dof is a diagnostic only
 (values far above 1 flag a curve that is not a power law in the window, e.g. the
 oscillations of a lattice).
+
+Window systematic. The paper states the scaling regime (rho^(-1/2) << a < R) but
+not the window it fitted, so the same curve gives exponents that differ between
+reasonable windows. :func:`sphere_exponents` refits every curve over a family of
+windows (every lower end of ``window_family["a_min_rho_half"]`` with every upper end
+of ``window_family["a_max_over_R"]``; windows with < 3 grid points or sigma^2 <= 0,
+e.g. a lattice's sigma^2(R) = 0, are skipped) and records the largest deviation
+max_w |delta_w - delta| from the main window: the measured systematic the Table I
+comparison adds to the statistical tolerance (:mod:`randmedia.compare.sphere2019`).
 """
 
 from __future__ import annotations
@@ -89,17 +98,43 @@ def window_mean(a, values, leave_out, *, a_min: float, a_max: float) -> FitResul
                      n_points=int(mask.sum()))
 
 
-def sphere_exponents(descriptors: dict, *, a_min_rho_half: float, a_max_over_R: float):
+def window_family_exponents(a, sigma2, *, rho: float, radius: float,
+                            a_min_rho_half, a_max_over_R) -> np.ndarray:
+    """delta of the pooled curve over every window [m / rho^(1/2), x R] of the family
+    (m in ``a_min_rho_half``, x in ``a_max_over_R``); windows with < 3 grid points or
+    sigma^2 <= 0 inside are skipped (module docstring, "Window systematic")."""
+    a, sigma2 = np.asarray(a, float), np.asarray(sigma2, float)
+    deltas = []
+    for low in a_min_rho_half:
+        for high in a_max_over_R:
+            a_min, a_max = low / np.sqrt(rho), high * radius
+            if not a_min < a_max:
+                continue
+            mask = (a >= a_min * (1 - 1e-12)) & (a <= a_max * (1 + 1e-12))
+            if mask.sum() < 3:
+                continue
+            slope = _log_log_slope(np.log(a[mask]), sigma2[mask])[0]
+            if np.isfinite(slope):
+                deltas.append(slope)
+    return np.array(deltas)
+
+
+def sphere_exponents(descriptors: dict, *, a_min_rho_half: float, a_max_over_R: float,
+                     window_family: dict | None = None):
     """delta per system from sphere2019 descriptor files (system -> Dataset of
     :mod:`randmedia.describe.sphere_points`): fit window a in [a_min_rho_half / rho^(1/2),
     a_max_over_R * R]; delta for both window-centre variants (NaN where a file has only
-    random centres) and the window mean of sigma^2/(rho s)."""
+    random centres), the window mean of sigma^2/(rho s), and the window systematic of
+    delta over ``window_family`` ({"a_min_rho_half": [...], "a_max_over_R": [...]}; the
+    main window alone when None; module docstring)."""
     import xarray as xr
 
+    family = window_family or {"a_min_rho_half": [a_min_rho_half], "a_max_over_R": [a_max_over_R]}
     names = sorted(descriptors)
     columns: dict[str, list] = {key: [] for key in (
         "delta", "delta_err", "delta_chi2_per_dof", "delta_three_origins", "delta_three_origins_err",
-        "fit_a_min", "fit_a_max", "fit_points", "scaled_mean", "scaled_mean_err", "R", "density",
+        "fit_a_min", "fit_a_max", "fit_points", "delta_window_min", "delta_window_max",
+        "window_systematic", "windows_used", "scaled_mean", "scaled_mean_err", "R", "density",
         "n_particles", "ensemble")}
     for name in names:
         ds = descriptors[name]
@@ -115,6 +150,8 @@ def sphere_exponents(descriptors: dict, *, a_min_rho_half: float, a_max_over_R: 
         main = results["random_centres"]
         origins = results.get("three_origins")
         sel = ds.sel(variant="random_centres")
+        family_deltas = np.append(window_family_exponents(
+            a, sel["sigma2"].values, rho=rho, radius=radius, **family), main.value)
         scale = rho * ds["cap_area"].values
         level = window_mean(a, sel["sigma2"].values / scale, sel["sigma2_jackknife"].values / scale,
                             a_min=a_min, a_max=a_max)
@@ -123,6 +160,10 @@ def sphere_exponents(descriptors: dict, *, a_min_rho_half: float, a_max_over_R: 
                            ("delta_three_origins", origins.value if origins else np.nan),
                            ("delta_three_origins_err", origins.error if origins else np.nan),
                            ("fit_a_min", a_min), ("fit_a_max", a_max), ("fit_points", main.n_points),
+                           ("delta_window_min", family_deltas.min()),
+                           ("delta_window_max", family_deltas.max()),
+                           ("window_systematic", np.abs(family_deltas - main.value).max()),
+                           ("windows_used", family_deltas.size - 1),
                            ("scaled_mean", level.value), ("scaled_mean_err", level.error),
                            ("R", radius), ("density", rho),
                            ("n_particles", float(ds.attrs["mean_n_points"])),
@@ -137,6 +178,10 @@ def sphere_exponents(descriptors: dict, *, a_min_rho_half: float, a_max_over_R: 
         "fit_a_min": "lower end of the fit window (a_min_rho_half / rho^(1/2))",
         "fit_a_max": "upper end of the fit window (a_max_over_R * R)",
         "fit_points": "cap radii in the fit window",
+        "delta_window_min": "smallest delta over the window family (and the main window)",
+        "delta_window_max": "largest delta over the window family (and the main window)",
+        "window_systematic": "max |delta_w - delta| over the window family (comparison margin)",
+        "windows_used": "windows of the family with >= 3 cap radii and sigma^2 > 0",
         "scaled_mean": "window mean of sigma^2/(rho s)",
         "scaled_mean_err": "jackknife error of scaled_mean",
         "R": "sphere radius", "density": "number density rho (or <rho>)",
@@ -145,4 +190,6 @@ def sphere_exponents(descriptors: dict, *, a_min_rho_half: float, a_max_over_R: 
     data = {key: (("system",), np.array(values), {"units": "1", "long_name": meta[key]})
             for key, values in columns.items()}
     return xr.Dataset(data, coords={"system": ("system", names, {"units": "1", "long_name": "system"})},
-                      attrs={"a_min_rho_half": a_min_rho_half, "a_max_over_R": a_max_over_R})
+                      attrs={"a_min_rho_half": a_min_rho_half, "a_max_over_R": a_max_over_R,
+                             "window_family_a_min_rho_half": list(family["a_min_rho_half"]),
+                             "window_family_a_max_over_R": list(family["a_max_over_R"])})

@@ -12,6 +12,11 @@ length d_LJ, temperature T* = k_B T / epsilon. Pair potentials on the *chord*
   of strength alpha/(4R^2) (:func:`dipole_pair_energy` is the general vector form;
   the test checks the identity).
 * ``uddpar``: U_LJ + alpha/r^3                                                    Eq. (12b)
+* ``uddpar_cubed``: U_LJ + epsilon (alpha d/r)^3 = U_LJ + alpha^3/r^3: a second reading
+  of Eq. (12b) in which alpha scales the dipole *length* (coupling alpha^3; alpha = 1
+  is unchanged). Eq. (12b) as printed cannot produce the paper's ordered alpha = 3, 6
+  states at T* = 5.2 (README, sphere2019); this reading is run beside it as separate
+  systems and compared in a second Table I row.
 * ``udc``:    U_LJ + gamma/r^2                                                    Eq. (12c)
 * ``ucc``:    U_LJ + beta/r                                                       Eq. (12d)
 
@@ -61,13 +66,13 @@ from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, 
 from randmedia.generate import refuse_invalid
 from randmedia.theory.sphere_caps import check_density, check_radius
 
-POTENTIALS = ("lj", "udd", "uddpar", "udc", "ucc")
+POTENTIALS = ("lj", "udd", "uddpar", "uddpar_cubed", "udc", "ucc")
 
 
 @dataclass(frozen=True)
 class Potential:
     """A pair potential of Eqs. (11)-(12): ``name`` in :data:`POTENTIALS`, ``coupling``
-    alpha (udd, uddpar), gamma (udc) or beta (ucc), LJ depth ``epsilon`` (0: no LJ)."""
+    alpha (udd, uddpar, uddpar_cubed), gamma (udc) or beta (ucc), LJ depth ``epsilon`` (0: no LJ)."""
 
     name: str
     coupling: float = 1.0
@@ -91,6 +96,8 @@ class Potential:
             c3, c1 = c, c / (4.0 * radius**2)
         elif self.name == "uddpar":
             c3 = c
+        elif self.name == "uddpar_cubed":
+            c3 = c**3
         elif self.name == "udc":
             c2 = c
         elif self.name == "ucc":

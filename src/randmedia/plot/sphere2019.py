@@ -204,14 +204,14 @@ def fig03_uncorrelated(poisson_points, uniform_points, uniform: xr.Dataset, pois
 
 LABELS = {
     "lj": "LJ", "udd": r"$U_{dd}$ (normal dipoles)", "uddpar": r"$U_{dd\parallel}$ ($1/r^3$)",
-    "udc": r"$U_{dc}$ ($1/r^2$)", "ucc": r"$U_{cc}$ ($1/r$)",
+    "uddpar_cubed": r"$U_{dd\parallel}$ ($(\alpha/r)^3$)", "udc": r"$U_{dc}$ ($1/r^2$)", "ucc": r"$U_{cc}$ ($1/r$)",
 }
 
 
 def _fluid_label(ds: xr.Dataset, with_coupling: bool = False) -> str:
     label = LABELS[ds.attrs["potential"]]
     if with_coupling and ds.attrs["potential"] != "lj":
-        symbol = {"udd": r"\alpha", "uddpar": r"\alpha", "udc": r"\gamma", "ucc": r"\beta"}[ds.attrs["potential"]]
+        symbol = {"udd": r"\alpha", "uddpar": r"\alpha", "uddpar_cubed": r"\alpha", "udc": r"\gamma", "ucc": r"\beta"}[ds.attrs["potential"]]
         label += rf", ${symbol} = {ds.attrs['coupling']:g}$"
     return label
 

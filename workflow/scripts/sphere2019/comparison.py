@@ -10,6 +10,6 @@ from randmedia.io import write_csv  # noqa: E402
 
 params = dict(snakemake.params.items())  # noqa: F821
 frame = comparison(pd.read_csv(snakemake.input.table), k_sigma=params["k_sigma"],  # noqa: F821
-                   margin=params["margin"])
+                   rounding_margin=params["rounding_margin"])
 log.info("%d rows, %d passed", len(frame), int(frame["passed"].sum()))
 write_csv(frame, snakemake.output[0])  # noqa: F821

@@ -1,4 +1,5 @@
-"""Rule sphere2019_fig06: snapshots for alpha = 1, 3, 6 (paper Fig. 6)."""
+"""Rule sphere2019_fig06: snapshots for alpha = 1, 3, 6 (paper Fig. 6), for Eq. (12b) as printed
+(fig06) and for its second reading (fig06_alpha_cubed)."""
 from randmedia.jobs import start_job
 
 log = start_job(snakemake)  # noqa: F821
@@ -7,9 +8,16 @@ from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of  # noqa: 
 from randmedia.io import read_dataset  # noqa: E402
 from randmedia.plot.sphere2019 import fig06_snapshots  # noqa: E402
 
-snapshots = {}
-for label, path in zip("abcdefgh", snakemake.input.configs):  # noqa: F821
-    ds = read_dataset(path, SPHERE_CONFIG, attrs=["R", "coupling"])
-    title = rf"({label}) $\alpha = {ds.attrs['coupling']:g}$, N = {int(ds['n_points'].values[-1])}"
-    snapshots[label] = (frames_of(ds)[-1], float(ds.attrs["R"]), title)
-fig06_snapshots(snapshots, snakemake.output.pdf)  # noqa: F821
+
+def snapshots(paths):
+    panels = {}
+    for label, path in zip("abcdefgh", paths):
+        ds = read_dataset(path, SPHERE_CONFIG, attrs=["R", "coupling"])
+        title = rf"({label}) $\alpha = {ds.attrs['coupling']:g}$, N = {int(ds['n_points'].values[-1])}"
+        panels[label] = (frames_of(ds)[-1], float(ds.attrs["R"]), title)
+    return panels
+
+
+inputs, outputs = snakemake.input, snakemake.output  # noqa: F821
+fig06_snapshots(snapshots(inputs.configs), outputs.pdf)
+fig06_snapshots(snapshots(inputs.alpha_cubed), outputs.alpha_cubed_pdf)

@@ -1,4 +1,5 @@
-"""Rules sphere2019_fig04, _fig05, _fig07, _fig08: curves of the fluids (paper Figs. 4, 5, 7, 8)."""
+"""Rules sphere2019_fig04, _fig05, _fig07, _fig08: curves of the fluids (paper Figs. 4, 5, 7, 8);
+Figs. 5, 7, 8 also for the second reading of Eq. (12b) (input alpha_cubed -> figNN_alpha_cubed)."""
 from randmedia.jobs import start_job
 
 log = start_job(snakemake)  # noqa: F821
@@ -7,9 +8,17 @@ from randmedia.describe.sphere_points import CAP_VARIANCE  # noqa: E402
 from randmedia.io import read_dataset  # noqa: E402
 from randmedia.plot import sphere2019 as figures  # noqa: E402
 
-descriptors = {}
-for path in snakemake.input.descriptors:  # noqa: F821
-    ds = read_dataset(path, CAP_VARIANCE, attrs=["system", "R", "density", "potential", "coupling"])
-    descriptors[ds.attrs["system"]] = ds
+
+def descriptors(paths):
+    by_system = {}
+    for path in paths:
+        ds = read_dataset(path, CAP_VARIANCE, attrs=["system", "R", "density", "potential", "coupling"])
+        by_system[ds.attrs["system"]] = ds
+    return by_system
+
+
+inputs, outputs = snakemake.input, snakemake.output  # noqa: F821
 draw = getattr(figures, snakemake.params.figure)  # noqa: F821
-draw(descriptors, snakemake.output.pdf, a_min=snakemake.params.a_min)  # noqa: F821
+draw(descriptors(inputs.descriptors), outputs.pdf, a_min=snakemake.params.a_min)  # noqa: F821
+if "alpha_cubed_pdf" in outputs.keys():
+    draw(descriptors(inputs.alpha_cubed), outputs.alpha_cubed_pdf, a_min=snakemake.params.a_min)  # noqa: F821
