@@ -6,7 +6,8 @@ import numpy as np
 import pytest
 
 from conftest import REPO
-from randmedia.compare import COLUMNS, compare, comparison_frame, read_reference, tolerance
+from randmedia.compare import (COLUMNS, compare, comparison_frame, judged_deviation, read_reference,
+                               tolerance)
 from randmedia.seeding import sample_seed
 
 
@@ -23,6 +24,17 @@ def test_passed_is_exactly_deviation_within_tolerance():
     assert beyond["passed"] is False
     missing = compare("q", "k", 1.0, math.nan, 0.1, k_sigma=3.0)
     assert missing["passed"] is False
+
+
+def test_upper_bound_rows_pass_below_the_published_value_only():
+    below = compare("q", "k", 2e-4, 1e-6, 1e-7, k_sigma=3.0, upper_bound=True)
+    assert below["passed"] is True
+    edge = compare("q", "k", 1.0, 1.5, 0.25, k_sigma=2.0, upper_bound=True)
+    assert edge["passed"] is True
+    assert compare("q", "k", 1.0, 1.5000001, 0.25, k_sigma=2.0, upper_bound=True)["passed"] is False
+    assert compare("q", "k", 1.0, math.nan, 0.1, k_sigma=3.0, upper_bound=True)["passed"] is False
+    frame = comparison_frame([below, edge, compare("q", "k", 1.0, 0.2, 0.1, k_sigma=3.0)])
+    np.testing.assert_allclose(judged_deviation(frame), [1e-6 - 2e-4, 0.5, 0.8])
 
 
 def test_frame_has_contract_columns():

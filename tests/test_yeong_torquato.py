@@ -42,6 +42,67 @@ def test_shell_counts_equal_brute_force():
         np.testing.assert_array_equal(h[x], expected)
 
 
+def test_fft_shell_counts_equal_the_flip_kernel_out_to_half_the_box():
+    """_shell_counts (FFT) against every tracked pixel applied as a +1 flip by the update
+    kernel, for a shell range reaching 0.49 L (the long-range stages)."""
+    from randmedia.generate.yeong_torquato import _apply_flips
+
+    side = 41
+    geometry = _Geometry(side, 20.0)
+    image = (np.random.default_rng(1).random(side * side) < 0.3).astype(np.uint8)
+    flips = np.zeros((side * side, geometry.n_columns), dtype=np.int16)
+    tracked = np.flatnonzero(image).astype(np.int64)
+    _apply_flips(flips, side, tracked, np.ones(tracked.size, dtype=np.int16), tracked.size,
+                 *geometry.runs)
+    np.testing.assert_array_equal(
+        _shell_counts(image, side, geometry.offsets, geometry.column, geometry.n_columns), flips)
+
+
+def test_long_range_stages_constrain_s2_out_to_half_the_box():
+    """After convergence on 0 < r <= l_c, two stages on bins out to 0.49 L bring the mean
+    |S2 - target| over all bins 0 < r < L/2 down several-fold and keep the l_c range
+    converged; the disk-scan baseline follows the same trajectory."""
+    side, cutoff, phi2 = 61, 8.0, 0.3
+    plain = build(phi2, seed=2, side=side, cutoff=cutoff)
+    schedule = AnnealingSchedule(long_range_stages=2)
+    far = build(phi2, seed=2, side=side, cutoff=cutoff, schedule=schedule)
+
+    def full_range(image):
+        s2 = two_point_function(image[np.newaxis], phase=1, r_max=side // 2 - 1)
+        return s2_discrepancy(s2, debye(phi2), image.shape)[0]
+
+    assert far.stats["long_range_stages"] == 2 and far.stats["long_range_accepted"] > 0
+    assert far.delta_s2 <= 2e-4
+    assert full_range(far.image) < full_range(plain.image) / 3
+    scanned = build(phi2, seed=2, side=side, cutoff=cutoff, schedule=schedule, scan=True)
+    np.testing.assert_array_equal(scanned.image, far.image)
+
+
+def test_construction_interrupted_in_a_long_range_stage_resumes_to_the_same_image(tmp_path):
+    import logging
+
+    class Interrupt(logging.Handler):
+        def emit(self, record):
+            if record.getMessage().startswith("long-range stage 2/"):
+                raise KeyboardInterrupt
+
+    schedule = AnnealingSchedule(long_range_stages=3)
+    whole = build(seed=6, side=61, cutoff=8.0, schedule=schedule)
+    log = logging.getLogger("test_yt_interrupt")
+    log.setLevel(logging.INFO)
+    handler = Interrupt()
+    log.addHandler(handler)
+    checkpoint = tmp_path / "c.npz"
+    with pytest.raises(KeyboardInterrupt):
+        build(seed=6, side=61, cutoff=8.0, schedule=schedule, checkpoint=checkpoint,
+              checkpoint_seconds=0.0, log=log)
+    log.removeHandler(handler)
+    assert checkpoint.exists()
+    resumed = build(seed=6, side=61, cutoff=8.0, schedule=schedule, checkpoint=checkpoint, log=log)
+    np.testing.assert_array_equal(resumed.image, whole.image)
+    assert not checkpoint.exists()
+
+
 @pytest.mark.parametrize("side, cutoff", [(SIDE, CUTOFF), (60, 9.0)], ids=["one-cell", "bucketed"])
 def test_fast_and_disk_scan_constructions_are_identical(side, cutoff):
     """O(bins) trials with deferred, batched count updates (any batch size) and the O(l_c^2)

@@ -8,7 +8,10 @@ with ``ours_sem`` our standard error of the mean over samples,
 ``published_err`` the error the paper quotes (0 when it quotes none, and for
 exact results), and ``systematic`` a margin whose origin the caller states
 (e.g. a bias bound computed from theory). ``passed`` is exactly
-``|ours - published| <= tolerance``; a missing value (NaN) never passes.
+``|ours - published| <= tolerance``; a missing value (NaN) never passes. A
+published value that is a quality bound rather than a measurement (e.g. "the
+discrepancies are as small as 2 x 10^-4") is compared with ``upper_bound=True``:
+``passed`` is then ``ours - published <= tolerance``, and the row's key says so.
 """
 
 from __future__ import annotations
@@ -20,6 +23,9 @@ from typing import Iterable, Mapping
 import pandas as pd
 
 COLUMNS = ("quantity", "key", "published", "ours", "ours_sem", "tolerance", "passed")
+
+#: appended to the key of an upper-bound row (module docstring)
+UPPER_BOUND_NOTE = " (upper bound: passed if ours <= published)"
 
 
 def tolerance(ours_sem: float, *, k_sigma: float, published_err: float = 0.0,
@@ -33,19 +39,29 @@ def tolerance(ours_sem: float, *, k_sigma: float, published_err: float = 0.0,
 
 
 def compare(quantity: str, key: str, published: float, ours: float, ours_sem: float, *,
-            k_sigma: float, published_err: float = 0.0, systematic: float = 0.0) -> dict:
-    """One comparison row (a dict with the keys of :data:`COLUMNS`)."""
+            k_sigma: float, published_err: float = 0.0, systematic: float = 0.0,
+            upper_bound: bool = False) -> dict:
+    """One comparison row (a dict with the keys of :data:`COLUMNS`); ``upper_bound``: the
+    published value bounds ours from above (module docstring)."""
     tol = tolerance(ours_sem, k_sigma=k_sigma, published_err=published_err, systematic=systematic)
-    deviation = abs(ours - published)
+    deviation = ours - published if upper_bound else abs(ours - published)
     return {
         "quantity": quantity,
-        "key": key,
+        "key": key + UPPER_BOUND_NOTE if upper_bound else key,
         "published": float(published),
         "ours": float(ours),
         "ours_sem": float(ours_sem),
         "tolerance": float(tol),
         "passed": bool(deviation <= tol),  # False for NaN
     }
+
+
+def judged_deviation(frame: pd.DataFrame) -> pd.Series:
+    """The deviation ``passed`` was judged on, per row of a comparison table: ours -
+    published for upper-bound rows (key ending in :data:`UPPER_BOUND_NOTE`), else |ours -
+    published|; ``passed == (judged_deviation <= tolerance)`` holds for every row."""
+    signed = frame["ours"] - frame["published"]
+    return signed.where(frame["key"].str.endswith(UPPER_BOUND_NOTE), signed.abs())
 
 
 def comparison_frame(rows: Iterable[Mapping]) -> pd.DataFrame:
