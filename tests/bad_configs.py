@@ -1,6 +1,6 @@
 """Invalid configurations, each with the config key its error message must name.
 
-Each case mutates a copy of config/quick.yaml. Used by test_config.py (the
+Each case mutates a copy of the quick config (config/quick.yaml merged over config/config.yaml). Used by test_config.py (the
 validator directly) and test_workflow.py (Snakemake must refuse them before
 any job runs).
 """
@@ -8,11 +8,8 @@ any job runs).
 from __future__ import annotations
 
 import copy
-from pathlib import Path
 
-import yaml
-
-QUICK = Path(__file__).resolve().parents[1] / "config" / "quick.yaml"
+from conftest import quick_config
 
 
 def _set(path, value):
@@ -132,11 +129,6 @@ BAD_CONFIGS += [
     ("sphere_ico_resolution_one", _set(("sphere2019", "patterns", "icosahedral_resolution"), 1),
      "sphere2019.patterns.icosahedral_resolution"),
 ]
-
-
-def quick_config() -> dict:
-    with open(QUICK) as handle:
-        return yaml.safe_load(handle)
 
 
 def bad_config(mutation) -> dict:

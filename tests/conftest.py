@@ -15,6 +15,14 @@ SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
 WORKFLOW_PARTS = ("Snakefile", "workflow", "config", "profiles", "src")
 
 
+def quick_config(workdir: Path = REPO) -> dict:
+    """The quick config as Snakemake sees it: config/quick.yaml merged over config/config.yaml
+    (before schema defaults are filled in)."""
+    from randmedia.config import load_config
+
+    return load_config(workdir / "config" / "config.yaml", workdir / "config" / "quick.yaml")
+
+
 def copy_workflow(destination: Path) -> Path:
     """A runnable copy of the workflow (its own results/, .snakemake/, numba cache)."""
     destination.mkdir(parents=True, exist_ok=True)

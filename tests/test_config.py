@@ -5,16 +5,39 @@ import copy
 import pytest
 import yaml
 
-from bad_configs import BAD_CONFIGS, bad_config, quick_config
-from conftest import REPO, SCHEMA
-from randmedia.config import ConfigError, validate_config
+from bad_configs import BAD_CONFIGS, bad_config
+from conftest import REPO, SCHEMA, quick_config
+from randmedia.config import ConfigError, load_config, merge_config, validate_config
 
 
-@pytest.mark.parametrize("name", ["config.yaml", "quick.yaml"])
-def test_shipped_configs_are_valid(name):
-    with open(REPO / "config" / name) as handle:
-        config = yaml.safe_load(handle)
-    validate_config(config, SCHEMA)
+def test_shipped_configs_are_valid():
+    validate_config(load_config(REPO / "config" / "config.yaml"), SCHEMA)
+    validate_config(quick_config(), SCHEMA)
+
+
+def test_quick_config_holds_only_the_keys_it_changes():
+    """config/quick.yaml is an overlay: every value it states differs from the paper config's
+    (a key repeated with the paper's value would silently stop following config.yaml)."""
+    paper = load_config(REPO / "config" / "config.yaml")
+    repeated = []
+
+    def walk(base, overlay, path):
+        for key, value in overlay.items():
+            assert key in base, f"quick.yaml key {'.'.join(path + (key,))} is not in config.yaml"
+            if isinstance(value, dict):
+                walk(base[key], value, path + (key,))
+            elif value == base[key]:
+                repeated.append(".".join(path + (key,)))
+
+    walk(paper, load_config(REPO / "config" / "quick.yaml"), ())
+    assert not repeated, repeated
+
+
+def test_merge_follows_snakemake_configfile_semantics():
+    base = {"a": {"b": 1, "c": [1, 2], "d": {"e": 3}}, "f": 4}
+    merged = merge_config(base, {"a": {"c": [5], "d": {"g": 6}}, "h": 7})
+    assert merged == {"a": {"b": 1, "c": [5], "d": {"e": 3, "g": 6}}, "f": 4, "h": 7}
+    assert base == {"a": {"b": 1, "c": [1, 2], "d": {"e": 3}}, "f": 4}
 
 
 def test_defaults_are_filled_in():
@@ -42,7 +65,7 @@ def test_valid_config_is_not_mutated_beyond_defaults():
     config = quick_config()
     before = copy.deepcopy(config)
     validate_config(config, SCHEMA)
-    assert config == before  # quick.yaml already states every key
+    assert config == before  # config.yaml (under the quick overlay) states every key
 
 
 def test_schema_includes_are_resolved_and_bad_includes_named(tmp_path):

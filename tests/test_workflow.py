@@ -18,7 +18,7 @@ import pytest
 import yaml
 
 from bad_configs import BAD_CONFIGS, bad_config
-from conftest import copy_workflow, run_snakemake, snakemake_command
+from conftest import copy_workflow, quick_config, run_snakemake, snakemake_command
 from randmedia.compare import COLUMNS, UPPER_BOUND_NOTE, judged_deviation
 from randmedia.io import PROVENANCE_ATTRS, read_dataset
 
@@ -93,8 +93,7 @@ def test_quick_run_produces_every_target(quick_run):
 
 def test_quick_media_converged_and_recorded(quick_run):
     """Every constructed medium records Delta S2 <= tolerance, and the describe step agrees."""
-    with open(quick_run / "config" / "quick.yaml") as handle:
-        media = yaml.safe_load(handle)["debye2020"]["media"]
+    media = quick_config(quick_run)["debye2020"]["media"]
     for phi2 in media["phi2"]:
         s2 = read_dataset(quick_run / f"results/debye2020/descriptors/media_phi{phi2:g}_S2.nc")
         for k in range(media["n_samples"]):

@@ -7,8 +7,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-import yaml
 
+from conftest import quick_config as load_quick_config
 from randmedia.compare import COLUMNS, judged_deviation
 from randmedia.io import read_dataset
 
@@ -29,8 +29,7 @@ EXPECTED_OUTPUTS_DEBYE2020 = [
 
 @pytest.fixture(scope="module")
 def quick_config(quick_run):
-    with open(quick_run / "config" / "quick.yaml") as handle:
-        return yaml.safe_load(handle)["debye2020"]
+    return load_quick_config(quick_run)["debye2020"]
 
 
 @pytest.fixture(scope="module")

@@ -11,9 +11,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-import yaml
 
-from conftest import run_snakemake
+from conftest import quick_config, run_snakemake
 from randmedia.compare import COLUMNS
 from randmedia.generate import PARTICLE_CONFIG, PHASE_IMAGE
 from randmedia.generate.disks import digitize_disks
@@ -29,9 +28,7 @@ def hard_particles_run(quick_run):
     result = run_snakemake(quick_run, "debye2020_hard_disks", "mrj2016_equilibrium", "--cores", "2",
                            "--configfile", "config/quick.yaml")
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
-    with open(quick_run / "config" / "quick.yaml") as handle:
-        config = yaml.safe_load(handle)
-    return quick_run, config
+    return quick_run, quick_config(quick_run)
 
 
 def test_hard_disk_images(hard_particles_run):

@@ -5,8 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-import yaml
 
+from conftest import quick_config
 from randmedia.compare import COLUMNS, judged_deviation
 from randmedia.io import read_dataset
 
@@ -17,8 +17,7 @@ REFERENCE = "config/reference"
 
 
 def quick_section(workdir):
-    with open(workdir / "config" / "quick.yaml") as handle:
-        return yaml.safe_load(handle)["mrj2016"]
+    return quick_config(workdir)["mrj2016"]
 
 
 def test_figures_tables_and_comparison_exist(quick_run):

@@ -5,9 +5,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-import yaml
 
-from conftest import run_snakemake
+from conftest import quick_config, run_snakemake
 from randmedia.describe import jamming
 from randmedia.generate import PARTICLE_CONFIG
 from randmedia.io import read_dataset
@@ -30,8 +29,7 @@ def jammed_run(quick_run):
 
 @pytest.fixture(scope="module")
 def section(jammed_run):
-    with open(jammed_run / "config" / "quick.yaml") as handle:
-        return yaml.safe_load(handle)["mrj2016"]["mrj"]
+    return quick_config(jammed_run)["mrj2016"]["mrj"]
 
 
 def packing_files(workdir, section):

@@ -6,8 +6,8 @@ from __future__ import annotations
 import numpy as np
 import pandas as pd
 import pytest
-import yaml
 
+from conftest import quick_config
 from randmedia.compare import COLUMNS, judged_deviation
 from randmedia.describe.sphere_points import CAP_VARIANCE
 from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of
@@ -22,8 +22,7 @@ SYSTEMS = ["icosahedral", "fibonacci", "uniform", "poisson", "lj_R15", "udd_R15"
 
 @pytest.fixture(scope="module")
 def quick(quick_run):
-    with open(quick_run / "config" / "quick.yaml") as handle:
-        return quick_run, yaml.safe_load(handle)["sphere2019"]
+    return quick_run, quick_config(quick_run)["sphere2019"]
 
 
 def test_every_sphere2019_target_exists(quick):

@@ -38,6 +38,29 @@ def _copy(value):
     return yaml.safe_load(yaml.safe_dump(value))
 
 
+def merge_config(base: dict, override: dict) -> dict:
+    """``base`` updated by ``override`` the way Snakemake merges ``--configfile`` files over
+    the Snakefile's ``configfile``: mappings recursively, every other value (lists
+    included) replaced. Returns a new dict; the inputs are not changed."""
+    merged = _copy(base)
+    for key, value in override.items():
+        if isinstance(value, dict) and isinstance(merged.get(key), dict):
+            merged[key] = merge_config(merged[key], value)
+        else:
+            merged[key] = _copy(value)
+    return merged
+
+
+def load_config(*paths: str | Path) -> dict:
+    """The config Snakemake sees for ``--configfile`` files ``paths[1:]`` over ``paths[0]``
+    (e.g. ``load_config("config/config.yaml", "config/quick.yaml")``), before validation."""
+    merged: dict = {}
+    for path in paths:
+        with open(path) as handle:
+            merged = merge_config(merged, yaml.safe_load(handle) or {})
+    return merged
+
+
 _Validator = _with_default_filling(jsonschema.Draft202012Validator)
 
 
