@@ -115,6 +115,8 @@ def test_fits_and_numbers_are_complete(quick_run, quick_config):
                  "eq28_rel_error", "euler_slope", "wraps_phase2", "wraps_phase1"):
         assert np.all(np.isfinite(fits[name].values)), name
     assert np.all(fits["p1"].values > 0) and np.all(np.isfinite(fits["p1_coefficients"].values))
+    assert np.all(fits["p1_pixel_centres"].values > 0)
+    assert np.all(np.isfinite(fits["p1_coefficients_pixel_centres"].values))
     # the Euler-characteristic formula vanishes at phi2 = 1/2 and is positive below
     formula = fits["euler_formula"].values
     assert formula[np.argmin(np.abs(fits["phi2"].values - 0.5))] == pytest.approx(0.0, abs=1e-15)

@@ -119,6 +119,7 @@ def pore_size_functions(images, rng: np.random.Generator, *, sigma: float, super
     max_delta = np.empty(n)
     n_points = np.empty(n, dtype=np.int64)
     mean_pixel_centre = np.empty(n)
+    P_pixel_centre = np.empty((n, edges.size - 1))
     progress = Progress(n, "pore sizes", log)
     for k, image in enumerate(images):
         distances = np.sort(void_distances(LevelSet.build(image, 0, sigma, supersample, model), rng,
@@ -129,7 +130,9 @@ def pore_size_functions(images, rng: np.random.Generator, *, sigma: float, super
         mean_delta[k] = distances.mean()
         max_delta[k] = distances[-1]
         n_points[k] = count
-        mean_pixel_centre[k] = pixel_centre_distances(image).mean()
+        centre_distances = pixel_centre_distances(image)
+        mean_pixel_centre[k] = centre_distances.mean()
+        P_pixel_centre[k] = np.histogram(centre_distances, bins=edges)[0] / (centre_distances.size * delta_bin)
         progress.step()
     centres = 0.5 * (edges[1:] + edges[:-1])
     return xr.Dataset(
@@ -154,6 +157,9 @@ def pore_size_functions(images, rng: np.random.Generator, *, sigma: float, super
             "mean_delta_pixel_centres_samples": ("sample", mean_pixel_centre, {"units": "pixel",
                 "long_name": "diagnostic: mean distance from void pixel centres to the nearest "
                              "phase-2 pixel centre (biased by about +1/2 pixel)"}),
+            "P_pixel_centres_samples": (("sample", "delta_bin"), P_pixel_centre, {"units": "1/pixel",
+                "long_name": "second reading: histogram density of the pixel-centre distances "
+                             "(void pixel centre to nearest phase-2 pixel centre) per sample"}),
         },
         coords={
             "delta": ("delta", edges, {"units": "pixel", "long_name": "pore radius delta"}),

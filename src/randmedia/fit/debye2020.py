@@ -270,17 +270,30 @@ def surface_pore_fits(systems: dict, *, a: float, fits: dict) -> "xr.Dataset":
                    mean_delta_eq28=debye.debye_mean_pore_size(phi2, a))
         row["eq28_rel_error"] = (row["mean_delta_eq28"] - row["mean_delta"]) / row["mean_delta"]
         row["eq28_rel_error_sem"] = row["mean_delta_eq28"] * row["mean_delta_sem"] / row["mean_delta"] ** 2
+        # second reading of "pore size" on pixels: void pixel centre to the nearest phase-2
+        # pixel centre (the paper does not say how it sampled P(delta) from its images)
         centre = pores["mean_delta_pixel_centres_samples"].values
         row["mean_delta_pixel_centres"] = centre.mean()
+        row["mean_delta_pixel_centres_sem"] = standard_error(centre)
         row["eq28_rel_error_pixel_centres"] = (row["mean_delta_eq28"] - centre.mean()) / centre.mean()
+        row["eq28_rel_error_pixel_centres_sem"] = (row["mean_delta_eq28"] * standard_error(centre)
+                                                   / centre.mean() ** 2)
+        p1_centres = np.array([pore_size_fit(centres, P, p0=p0, p2=p0, delta_max=delta_max)[0].value
+                               for P in pores["P_pixel_centres_samples"].values])
+        row["p1_pixel_centres"] = p1_centres.mean()
+        row["p1_pixel_centres_sem"] = standard_error(p1_centres)
         rows.append(row)
 
     phi2 = np.array([row["phi2"] for row in rows])
-    if phi2.size >= 3:
-        cubic = p1_polynomial(phi2, [row["p1"] for row in rows], [row["p1_sem"] for row in rows], a)
-        coefficients, covariance, chi2 = cubic["coefficients"], cubic["covariance"], cubic["chi2_per_dof"]
-    else:
-        coefficients, covariance, chi2 = np.full(3, np.nan), np.full((3, 3), np.nan), np.nan
+
+    def cubic_of(name):
+        if phi2.size < 3:
+            return np.full(3, np.nan), np.full((3, 3), np.nan), np.nan
+        cubic = p1_polynomial(phi2, [row[name] for row in rows], [row[f"{name}_sem"] for row in rows], a)
+        return cubic["coefficients"], cubic["covariance"], cubic["chi2_per_dof"]
+
+    coefficients, covariance, chi2 = cubic_of("p1")
+    centre_coefficients, centre_covariance, centre_chi2 = cubic_of("p1_pixel_centres")
     for row in rows:
         if np.all(np.isfinite(coefficients)):
             own = debye.mean_pore_size(float(debye.pore_p1(row["phi2"], a, coefficients)),
@@ -297,12 +310,17 @@ def surface_pore_fits(systems: dict, *, a: float, fits: dict) -> "xr.Dataset":
                                "c_k of a^2 p1 = c1 phi2 + c2 phi2^2 + c3 phi2^3 (SEM-weighted fit)"})
     data["p1_coefficients_covariance"] = (("power", "power_b"), covariance, {"units": "1", "long_name":
                                           "covariance of the c_k from the p1 standard errors"})
+    data["p1_coefficients_pixel_centres"] = ("power", centre_coefficients, {"units": "1", "long_name":
+                                             "c_k of the cubic fitted to p1_pixel_centres"})
+    data["p1_coefficients_pixel_centres_covariance"] = (
+        ("power", "power_b"), centre_covariance, {"units": "1", "long_name":
+                                                  "covariance of the pixel-centre c_k"})
     return xr.Dataset(
         data,
         coords={"phi2": ("phi2", phi2, {"units": "1", "long_name": "volume fraction of phase 2"}),
                 "power": ("power", [1, 2, 3], {"units": "1", "long_name": "power of phi2"}),
                 "power_b": ("power_b", [1, 2, 3], {"units": "1", "long_name": "power of phi2"})},
-        attrs={"a": a, "p1_cubic_chi2_per_dof": chi2,
+        attrs={"a": a, "p1_cubic_chi2_per_dof": chi2, "p1_pixel_centres_cubic_chi2_per_dof": centre_chi2,
                **dict(zip(("percolation_crossing", "percolation_crossing_err",
                            "percolation_bracket"),
                           wrapping_crossing(phi2, data["wraps_phase2"][1], data["wraps_phase1"][1],
@@ -356,4 +374,8 @@ _SURFACE_PORE_UNITS = {
     "mean_delta_pixel_centres": ("pixel", "diagnostic: mean pixel-centre distance transform of the "
                                  "void (biased by about +1/2 pixel)"),
     "eq28_rel_error_pixel_centres": ("1", "(Eq. (28) - pixel-centre <delta>) / pixel-centre <delta>"),
+    "mean_delta_pixel_centres_sem": ("pixel", "standard error of mean_delta_pixel_centres"),
+    "eq28_rel_error_pixel_centres_sem": ("1", "standard error of eq28_rel_error_pixel_centres"),
+    "p1_pixel_centres": ("1/pixel^2", "p1 of Eq. (27) fitted to the pixel-centre P(delta) (second reading)"),
+    "p1_pixel_centres_sem": ("1/pixel^2", "standard error of p1_pixel_centres"),
 }
