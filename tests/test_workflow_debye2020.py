@@ -78,7 +78,7 @@ def test_parameter_rows_report_the_configured_values(table, quick_config):
 def test_eq27_normalization_and_p0_p2_rows(table, quick_config):
     """p0 = p2 makes Eq. (27) normalized (quadrature to 1e-8); the measured P(0) and the free p2
     are near pi phi2 / a (within 8 % with the two samples and a = 3 px of the quick config;
-    at paper size see README)."""
+    at paper size see docs/debye2020.md)."""
     p2 = table[table["quantity"] == "p2"]
     normalization = p2[p2["key"].str.contains("normalization")]
     assert len(normalization) == len(quick_config["media"]["phi2"]) and normalization["passed"].all()
@@ -95,7 +95,7 @@ def test_overlapping_disk_validation_rows(table):
     their fluctuations (the whole large-r plateau of F_sv moves with the images' mean void
     fraction), so the criterion is calibrated: at least 90 % of each family's rows pass and
     none is off by more than 7 SEM. A 5 % bias of an estimator fails it. (The systematic left
-    at R = 6 px: F_ss within ~2 px of r = 0, see README.)"""
+    at R = 6 px: F_ss within ~2 px of r = 0, see docs/debye2020.md.)"""
     for family, least in (("F_sv_overlapping", 30), ("F_ss_overlapping", 30),
                           ("F_pore_overlapping", 8), ("P_pore_overlapping", 8)):
         rows = table[table["quantity"].str.startswith(family)]
