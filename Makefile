@@ -8,7 +8,7 @@ VENV   ?= .venv
 BIN    := $(VENV)/bin
 STAMP  := $(VENV)/.installed
 
-.PHONY: reproduce quick test install clean-results
+.PHONY: reproduce quick test install clean-results slurm-check
 
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
@@ -26,6 +26,12 @@ quick: $(STAMP)
 
 test: $(STAMP)
 	$(BIN)/python -m pytest
+
+# installs and starts a single-node SLURM (root, apt), runs a small target of each paper through
+# profiles/slurm and locally, checks the outputs are identical, stops SLURM (~5-10 min)
+slurm-check: $(STAMP)
+	$(BIN)/python -m pip install --quiet -e '.[cluster]'
+	bash profiles/slurm/check.sh
 
 clean-results:
 	rm -rf results .snakemake

@@ -42,6 +42,9 @@ rule mrj2016_jammed_packing:
     resources:
         # HiGHS IPX: ~2 GB for one LP of 16 000 spheres (measured)
         mem_mb=lambda wildcards: 500 + MRJ_JAMMED[wildcards.system]["n_particles"] // 4,
+        # minutes, for cluster queues: 3x the measured 1054 CPU s at N = 2000, scaled with the
+        # measured LP cost ~ N^2.4 (docs/mrj2016.md; N = 10 000: ~42 h)
+        runtime=lambda wildcards: max(30, int(3 * 1054 / 60 * (MRJ_JAMMED[wildcards.system]["n_particles"] / 2000) ** 2.4)),
     script:
         "../scripts/mrj2016/jammed_packing.py"
 
