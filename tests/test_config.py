@@ -68,15 +68,24 @@ def test_valid_config_is_not_mutated_beyond_defaults():
     assert config == before  # config.yaml (under the quick overlay) states every key
 
 
-def test_schema_includes_are_resolved_and_bad_includes_named(tmp_path):
-    from randmedia.config import load_schema
+def test_schema_file_refs_are_resolved_and_bad_refs_named(tmp_path):
+    """Each paper's section is a standard JSON-Schema $ref to its file; validation resolves it
+    (defaults inside referenced files are filled in), a missing file is named before any
+    validation, and the inlined reading copy refuses a cycle."""
+    from randmedia.config import load_schema, schema_registry
 
     schema = load_schema(SCHEMA)
-    assert "$include" not in str(schema)
+    assert "$ref" not in str(schema) and "$include" not in str(schema)
     assert schema["properties"]["debye2020"]["properties"]["media"]["required"]
-    (tmp_path / "top.yaml").write_text("properties:\n  a:\n    $include: missing.yaml\n")
+    root, registry = schema_registry(SCHEMA)
+    assert root["properties"]["debye2020"] == {"$ref": "debye2020.schema.yaml"}
+    config = quick_config()
+    del config["mrj2016"]["mrj"]["polish"]  # a section of a referenced file, with defaults
+    validate_config(config, SCHEMA)
+    assert config["mrj2016"]["mrj"]["polish"]["tolerance"] > 0
+    (tmp_path / "top.yaml").write_text("properties:\n  a:\n    $ref: missing.yaml\n")
     with pytest.raises(FileNotFoundError, match="missing.yaml"):
-        load_schema(tmp_path / "top.yaml")
-    (tmp_path / "loop.yaml").write_text("properties:\n  a:\n    $include: loop.yaml\n")
+        schema_registry(tmp_path / "top.yaml")
+    (tmp_path / "loop.yaml").write_text("properties:\n  a:\n    $ref: loop.yaml\n")
     with pytest.raises(ValueError, match="cycle"):
         load_schema(tmp_path / "loop.yaml")

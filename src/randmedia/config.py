@@ -21,13 +21,18 @@ class ConfigError(ValueError):
 
 
 def _with_default_filling(validator_class):
-    """Extend a jsonschema validator so that ``default`` values are inserted."""
+    """Extend a jsonschema validator so that ``default`` values are inserted (also the
+    default of a property whose schema is a ``$ref`` to another file)."""
     validate_properties = validator_class.VALIDATORS["properties"]
 
     def set_defaults(validator, properties, instance, schema):
         if isinstance(instance, dict):
             for name, subschema in properties.items():
-                if "default" in subschema and name not in instance:
+                if name in instance:
+                    continue
+                if "default" not in subschema and "$ref" in subschema:
+                    subschema = validator._resolver.lookup(subschema["$ref"]).contents
+                if "default" in subschema:
                     instance[name] = _copy(subschema["default"])
         yield from validate_properties(validator, properties, instance, schema)
 
@@ -443,37 +448,70 @@ CROSS_CHECKS = {
 }
 
 
-def load_schema(path: str | Path) -> dict:
-    """The schema at ``path`` with every ``{"$include": "file.yaml"}`` mapping replaced,
-    recursively, by the schema in that file (same folder). Each paper keeps its section
-    of the schema in a file of its own."""
-    path = Path(path)
-    with open(path) as handle:
-        schema = yaml.safe_load(handle)
-    return _resolve_includes(schema, path.parent, (path.name,))
-
-
-def _resolve_includes(node, folder: Path, chain: tuple[str, ...]):
+def _file_refs(node):
+    """Every ``$ref`` to another schema file (no JSON pointer) below ``node``."""
     if isinstance(node, dict):
-        if set(node) == {"$include"}:
-            name = node["$include"]
-            if name in chain:
-                raise ValueError(f"schema include cycle: {' -> '.join(chain + (name,))}")
-            target = folder / name
-            if not target.is_file():
-                raise FileNotFoundError(f"{target}: schema file named by $include in {chain[-1]} "
-                                        "does not exist")
-            with open(target) as handle:
-                return _resolve_includes(yaml.safe_load(handle), folder, chain + (name,))
-        return {key: _resolve_includes(value, folder, chain) for key, value in node.items()}
-    if isinstance(node, list):
-        return [_resolve_includes(value, folder, chain) for value in node]
-    return node
+        ref = node.get("$ref")
+        if isinstance(ref, str) and not ref.startswith("#"):
+            yield ref
+        for value in node.values():
+            yield from _file_refs(value)
+    elif isinstance(node, list):
+        for value in node:
+            yield from _file_refs(value)
+
+
+def schema_registry(path: str | Path):
+    """(root schema, referencing.Registry) for the schema at ``path``: every schema file it
+    names by a standard JSON-Schema ``$ref`` (a file name of the same folder; each paper
+    keeps its section in a file of its own), recursively, registered under its file name."""
+    from referencing import Registry, Resource
+    from referencing.jsonschema import DRAFT202012
+
+    path = Path(path)
+    resources, pending = {}, [(path.name, "the command line")]
+    while pending:
+        name, named_by = pending.pop()
+        if name in resources:
+            continue
+        target = path.parent / name
+        if not target.is_file():
+            raise FileNotFoundError(f"{target}: schema file named by $ref in {named_by} does not exist")
+        with open(target) as handle:
+            resources[name] = yaml.safe_load(handle)
+        pending += [(ref.split("#")[0], name) for ref in _file_refs(resources[name])]
+    registry = Registry().with_resources(
+        (name, Resource.from_contents(contents, default_specification=DRAFT202012))
+        for name, contents in resources.items())
+    return resources[path.name], registry
+
+
+def load_schema(path: str | Path) -> dict:
+    """The schema at ``path`` with every ``{"$ref": "file.yaml"}`` replaced, recursively, by
+    the schema in that file -- one nested document, for reading (validation resolves the
+    references itself: :func:`schema_registry`)."""
+    root, registry = schema_registry(path)
+
+    def inline(node, chain):
+        if isinstance(node, dict):
+            ref = node.get("$ref")
+            if isinstance(ref, str) and not ref.startswith("#"):
+                if ref in chain:
+                    raise ValueError(f"schema $ref cycle: {' -> '.join(chain + (ref,))}")
+                rest = {k: v for k, v in node.items() if k != "$ref"}
+                return {**inline(registry.contents(ref), chain + (ref,)), **inline(rest, chain)}
+            return {key: inline(value, chain) for key, value in node.items()}
+        if isinstance(node, list):
+            return [inline(value, chain) for value in node]
+        return node
+
+    return inline(root, (Path(path).name,))
 
 
 def validate_config(config: MutableMapping[str, Any], schema_path: str | Path) -> MutableMapping:
     """Validate ``config`` in place (defaults filled); raise :class:`ConfigError` if invalid."""
-    validator = _Validator(load_schema(schema_path))
+    schema, registry = schema_registry(schema_path)
+    validator = _Validator(schema, registry=registry)
     errors = sorted(validator.iter_errors(config), key=lambda e: list(map(str, e.absolute_path)))
     problems = [_describe(e) for e in errors]
     if not problems:
