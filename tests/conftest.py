@@ -40,8 +40,10 @@ def snakemake_command(*args: str) -> list[str]:
     return [sys.executable, "-m", "snakemake", *args]
 
 
-def run_snakemake(workdir: Path, *args: str, timeout: float = 600) -> subprocess.CompletedProcess:
-    """Run Snakemake in ``workdir`` (its default profile applies), capturing output."""
+def run_snakemake(workdir: Path, *args: str, timeout: float = 1500) -> subprocess.CompletedProcess:
+    """Run Snakemake in ``workdir`` (its default profile applies), capturing output. The
+    timeout only stops a hung run: the whole quick DAG takes ~4 min on 2 idle cores, and
+    over 10 min on a machine shared with paper-config runs."""
     env = dict(os.environ)
     env.pop("NUMBA_CACHE_DIR", None)  # each copy keeps its own cache (set by common.smk)
     return subprocess.run(snakemake_command(*args), cwd=workdir, env=env, capture_output=True,
