@@ -18,6 +18,11 @@ configfile: "config/config.yaml"
 validate_config(config, Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml")
 
 
+# sample indices are numbers in every rule (other wildcards are constrained by their rules)
+wildcard_constraints:
+    k=r"\d+",
+
+
 include: "workflow/rules/common.smk"
 include: "workflow/rules/debye2020_hard_disks.smk"
 include: "workflow/rules/debye2020.smk"

@@ -3,7 +3,6 @@
 import copy
 
 import pytest
-import yaml
 
 from bad_configs import BAD_CONFIGS, bad_config
 from conftest import REPO, SCHEMA, quick_config

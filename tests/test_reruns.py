@@ -235,7 +235,7 @@ def test_rule_without_code_or_with_missing_module_stops_the_workflow(tmp_path):
     rules.write_text(text.replace(line, ""))
     result = run_snakemake(workdir, "-n")
     assert result.returncode != 0
-    assert "rule sphere2019_comparison: no static input `code`" in result.stdout + result.stderr
+    assert "rule sphere2019_comparison -- no static input `code`" in result.stdout + result.stderr
 
     workdir = copy_workflow(tmp_path / "missing")
     script = workdir / "workflow" / "scripts" / "sphere2019" / "fig01.py"

@@ -15,39 +15,161 @@ PACKAGE_DIR = Path(workflow.basedir) / "src" / "randmedia"
 
 
 def script_sources(script):
-    """The package modules (.py files) that the rule script ``script`` (a path relative to the
-    calling rule file, as in its ``script:``) can run: the transitive closure of its imports
-    of randmedia (randmedia.workflow_sources). Every script rule lists them as its input
-    ``code``, so that editing any of them reruns the rule and editing any other module
-    reruns nothing; check_script_rules() (end of the Snakefile) enforces it."""
+    """The package modules (.py files) that the script ``script`` of a rule (a path relative
+    to the rule's file, as written after its script keyword) can run: the transitive closure
+    of its imports of randmedia (randmedia.workflow_sources). Every script rule lists them
+    as its input ``code``, so that editing any of them reruns the rule and editing any other
+    module reruns nothing; check_script_rules() (end of the Snakefile) enforces it."""
     path = Path(str(workflow.current_basedir)) / script
     try:
         return [str(f) for f in _script_sources(path, PACKAGE_DIR)]
     except SourceError as error:
-        raise WorkflowError(f"sources of rule script {script}: {error}")
+        raise WorkflowError(f"sources of the script {script}: {error}")
 
 
 def check_script_rules():
-    """Every rule with a Python ``script:`` has the input ``code`` = script_sources(script)."""
+    """Every rule with a Python script has the input ``code`` = script_sources(its script)."""
     problems = []
-    for rule in workflow.rules:
-        if not rule.script or not str(rule.script).endswith(".py"):
+    for spec in workflow.rules:
+        name, script_name = spec.name, spec.script
+        if not script_name or not str(script_name).endswith(".py"):
             continue
-        script = Path(str(rule.basedir)) / rule.script
+        script = Path(str(spec.basedir)) / script_name
         try:
             expected = sorted(str(f) for f in _script_sources(script, PACKAGE_DIR))
         except SourceError as error:
-            problems.append(f"rule {rule.name}: {error}")
+            problems.append(f"rule {name} -- {error}")
             continue
-        code = rule.input.get("code")
+        code = spec.input.get("code")
         if code is None or callable(code):
-            problems.append(f"rule {rule.name}: no static input `code` "
-                            f"(add code=script_sources({str(rule.script)!r}))")
+            problems.append(f"rule {name} -- no static input `code` "
+                            f"(add code=script_sources({str(script_name)!r}))")
         elif sorted(str(f) for f in ([code] if isinstance(code, str) else code)) != expected:
-            problems.append(f"rule {rule.name}: input `code` is not script_sources({str(rule.script)!r})")
+            problems.append(f"rule {name} -- input `code` is not script_sources({str(script_name)!r})")
     if problems:
-        raise WorkflowError("package sources of script rules:\n  " + "\n  ".join(problems))
+        listing = "\n  ".join(problems)
+        raise WorkflowError(f"package sources of script rules:\n  {listing}")
 
 
-wildcard_constraints:
-    k=r"\d+",
+
+# --------------------------------------------------------------------------- debye2020 helpers
+# (called by the rules of workflow/rules/debye2020.smk; they read that file's constants)
+
+
+def level_set_files(system):
+    return {"surface": LEVEL_SET_SURFACE.format(system=system),
+            "pores": LEVEL_SET_PORES.format(system=system)}
+
+
+def comparison_models():
+    """The Sec. VI comparison systems (overlapping and equilibrium hard disks)."""
+    return [DISKS_SYSTEM, HARD_DISKS_SYSTEM]
+
+
+def figure_outputs(number):
+    return {"pdf": f"results/debye2020/figures/fig{number:02d}.pdf",
+            "png": f"results/debye2020/figures/fig{number:02d}.png"}
+
+
+def section6_inputs(number):
+    """Inputs of Figs. 9-12: the comparison-phi2 media, overlapping and hard disks."""
+    media = level_set_files(f"media_phi{COMPARISON_PHI2}")
+    disks = level_set_files(DISKS_SYSTEM)
+    if number == 9:
+        files = {"media_surface": media["surface"], "disks_surface": disks["surface"]}
+    elif number == 10:
+        files = {"media_pores": media["pores"], "disks_pores": disks["pores"]}
+    else:
+        files = {"media_chords": MEDIA_CHORDS.format(phi2=COMPARISON_PHI2),
+                 "disks_chords": DISKS_CHORDS}
+    hard = level_set_files(HARD_DISKS_SYSTEM)
+    files["hard_surface"] = hard["surface"]
+    if number == 10:
+        files["hard_pores"] = hard["pores"]
+    return files
+
+
+# --------------------------------------------------------------------------- mrj2016 helpers
+# (called by the rules of workflow/rules/mrj2016.smk; they read that file's constants)
+
+
+def _m_reference_column(path, column):
+    with open(path) as handle:
+        return [float(row[column]) for row in csv.DictReader(handle)]
+
+
+def m_have(system):
+    return system in M_SAMPLES
+
+
+def m_systems(kind):
+    return [s for s in M_KINDS[kind] if m_have(s)]
+
+
+def m_n_chunks(system):
+    return math.ceil(len(M_SAMPLES[system]) / M_CHUNK)
+
+
+def m_chunk_samples(wildcards):
+    first = int(wildcards.c) * M_CHUNK
+    return M_SAMPLES[wildcards.system][first: first + M_CHUNK]
+
+
+def m_merged(system, kind):
+    return f"results/mrj2016/descriptors/{system}_{kind}.nc"
+
+
+def m_inputs(pairs):
+    """Named inputs {kind_system: merged file} for the (kind, system) pairs that exist."""
+    return {f"{kind}_{system}": m_merged(system, kind) for kind, system in pairs
+            if system in m_systems(kind)}
+
+
+def m_describe_settings(kind, system, merge=False):
+    """The config values a describe job of one kind uses, and nothing else (so that changing
+    another kind's keys reruns none of its jobs): keyword arguments of
+    randmedia.describe.sphere_samples.describe (and, for the merge, of summarize).
+    descriptors.chunk_size only sets how samples are split into jobs (the chunk files and
+    `first`), not any value; number_variance.fit_r_min is used by the merge alone."""
+    if kind == "correlation":
+        settings = {"descriptors": {key: value for key, value in M_DESCRIPTORS.items()
+                                    if key != "chunk_size"}}
+        if merge:  # the Eq. (11) transform runs on k <= spectral.k_max
+            settings["spectral"] = {"k_max": M_SPECTRAL["k_max"]}
+        return settings
+    if kind == "spectral":
+        return {"spectral": M_SPECTRAL, "table_k": M_TABLE_K.get(system, [])}
+    if kind == "points":
+        return {"pores": M_PORES, "seed": config["seed"]}
+    if merge:
+        return {"windows": M_WINDOWS, "seed": config["seed"]}
+    return {"windows": {key: value for key, value in M_WINDOWS.items() if key != "fit_r_min"},
+            "seed": config["seed"]}
+
+
+def m_describe_inputs(wildcards):
+    """The chunk files of a system with several chunks; its samples when they form one chunk
+    (then the merge job computes them itself: one job instead of two)."""
+    if m_n_chunks(wildcards.system) == 1:
+        return {"samples": M_SAMPLES[wildcards.system]}
+    return {"chunks": expand("results/mrj2016/descriptors/{system}/{kind}_chunk{c}.nc",
+                             system=wildcards.system, kind=wildcards.kind,
+                             c=range(m_n_chunks(wildcards.system)))}
+
+
+# --------------------------------------------------------------------------- sphere2019 helpers
+# (called by the rules of workflow/rules/sphere2019.smk; they read that file's constants)
+
+
+def sphere_figure(number, second_reading=False):
+    """Output files of the rule of paper figure ``number``; with ``second_reading`` also
+    figNN_alpha_cubed (the same figure for the second reading of Eq. 12b)."""
+    files = {ext: f"results/sphere2019/figures/fig{number:02d}.{ext}" for ext in ("pdf", "png")}
+    if second_reading:
+        files.update({f"alpha_cubed_{ext}": f"results/sphere2019/figures/fig{number:02d}_alpha_cubed.{ext}"
+                      for ext in ("pdf", "png")})
+    return files
+
+
+def sphere_descriptors(systems):
+    return expand(SPHERE_DESCRIPTOR, system=systems)

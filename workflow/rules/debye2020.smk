@@ -261,7 +261,7 @@ DISKS_SYSTEM = f"overlapping_disks_phi{DISKS['phi2']:g}"
 COMPARISON_PHI2 = f"{DISKS['phi2']:g}"  # Sec. VI: all three models at this phi2
 # Equilibrium hard disks come from debye2020_hard_disks.smk (included before this file):
 # HARD_DISKS_SAMPLES, a list of results/debye2020/hard_disks/phi0.3/sample{k}.nc.
-HARD_DISKS_SYSTEM = "hard_disks_" + Path(HARD_DISKS_SAMPLES[0]).parent.name
+HARD_DISKS_SYSTEM = f"hard_disks_{Path(HARD_DISKS_SAMPLES[0]).parent.name}"
 
 LEVEL_SET_SYSTEMS = {
     f"media_phi{name}": {
@@ -278,12 +278,6 @@ LEVEL_SET_SYSTEMS[HARD_DISKS_SYSTEM] = {
     "samples": list(HARD_DISKS_SAMPLES),
     "target": {"model": "hard_disks"},  # radius, phi2 from the files' attributes
 }
-
-
-def level_set_files(system):
-    return {"surface": LEVEL_SET_SURFACE.format(system=system),
-            "pores": LEVEL_SET_PORES.format(system=system)}
-
 
 
 rule debye2020_level_set:
@@ -327,11 +321,6 @@ rule debye2020_fit_surface_pores:
         "results/debye2020/logs/fit_surface_pores.log",
     script:
         "../scripts/debye2020/fit_surface_pores.py"
-
-
-def comparison_models():
-    """The Sec. VI comparison systems (overlapping and equilibrium hard disks)."""
-    return [DISKS_SYSTEM, HARD_DISKS_SYSTEM]
 
 
 rule debye2020_numbers:
@@ -383,11 +372,6 @@ rule debye2020_comparison:
 
 MEDIA_LEVEL_SET = [level_set_files(f"media_phi{name}") for name in MEDIA_PHI2]
 LEVEL_SET_FIGURE = "results/debye2020/validation/overlapping_disks_level_set.pdf"
-
-
-def figure_outputs(number):
-    return {"pdf": f"results/debye2020/figures/fig{number:02d}.pdf",
-            "png": f"results/debye2020/figures/fig{number:02d}.png"}
 
 
 rule debye2020_fig03:
@@ -451,24 +435,6 @@ rule debye2020_fig08:
         "results/debye2020/logs/fig08.log",
     script:
         "../scripts/debye2020/fig08.py"
-
-
-def section6_inputs(number):
-    """Inputs of Figs. 9-12: the comparison-phi2 media, overlapping and hard disks."""
-    media = level_set_files(f"media_phi{COMPARISON_PHI2}")
-    disks = level_set_files(DISKS_SYSTEM)
-    if number == 9:
-        files = {"media_surface": media["surface"], "disks_surface": disks["surface"]}
-    elif number == 10:
-        files = {"media_pores": media["pores"], "disks_pores": disks["pores"]}
-    else:
-        files = {"media_chords": MEDIA_CHORDS.format(phi2=COMPARISON_PHI2),
-                 "disks_chords": DISKS_CHORDS}
-    hard = level_set_files(HARD_DISKS_SYSTEM)
-    files["hard_surface"] = hard["surface"]
-    if number == 10:
-        files["hard_pores"] = hard["pores"]
-    return files
 
 
 SECTION6_PARAMS = {"a": MEDIA["a"], "radius": DISKS["radius"], "phi2": DISKS["phi2"]}

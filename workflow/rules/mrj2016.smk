@@ -24,8 +24,8 @@ M_PORES = MRJ2016["pores"]
 M_WINDOWS = MRJ2016["number_variance"]
 M_FIGURES = MRJ2016.get("figures", {})
 M_CHUNK = M_DESCRIPTORS["chunk_size"]
-M_RESULTS = "results/mrj2016"
-M_CONFIG = M_RESULTS + "/configs/{system}/sample{k}.nc"
+
+M_CONFIG = "results/mrj2016/configs/{system}/sample{k}.nc"
 M_REFERENCE = {
     "table2": "config/reference/mrj2016_table2_equilibrium.csv",
     "table3": "config/reference/mrj2016_table3_mrj.csv",
@@ -33,11 +33,6 @@ M_REFERENCE = {
     "table5": "config/reference/mrj2016_table5_spectral_mrj.csv",
     "quoted": "config/reference/mrj2016_quoted_numbers.csv",
 }
-
-
-def _m_reference_column(path, column):
-    with open(path) as handle:
-        return [float(row[column]) for row in csv.DictReader(handle)]
 
 
 M_TABLE_K = {
@@ -64,33 +59,6 @@ M_KINDS = {
 }
 
 
-def m_have(system):
-    return system in M_SAMPLES
-
-
-def m_systems(kind):
-    return [s for s in M_KINDS[kind] if m_have(s)]
-
-
-def m_n_chunks(system):
-    return math.ceil(len(M_SAMPLES[system]) / M_CHUNK)
-
-
-def m_chunk_samples(wildcards):
-    first = int(wildcards.c) * M_CHUNK
-    return M_SAMPLES[wildcards.system][first: first + M_CHUNK]
-
-
-def m_merged(system, kind):
-    return f"{M_RESULTS}/descriptors/{system}_{kind}.nc"
-
-
-def m_inputs(pairs):
-    """Named inputs {kind_system: merged file} for the (kind, system) pairs that exist."""
-    return {f"{kind}_{system}": m_merged(system, kind) for kind, system in pairs
-            if system in m_systems(kind)}
-
-
 #: {system} and {kind} of the describe rules (constrained on those rules, not globally)
 M_SYSTEM_CONSTRAINT = "|".join(["overlapping", "fcc", "bcc", "equilibrium", "mrj", "mrj_large"])
 M_KIND_CONSTRAINT = "|".join(M_KINDS)
@@ -111,7 +79,7 @@ rule mrj2016_overlapping_samples:
         n_mean=M_OVERLAPPING["n_mean"],
         seed=config["seed"],
     log:
-        M_RESULTS + "/logs/overlapping_samples.log",
+        "results/mrj2016/logs/overlapping_samples.log",
     threads: 1
     script:
         "../scripts/mrj2016/overlapping_samples.py"
@@ -122,14 +90,14 @@ rule mrj2016_lattice_samples:
     input:
         code=script_sources("../scripts/mrj2016/lattice_samples.py"),
     output:
-        expand(M_RESULTS + "/configs/{{lattice}}/sample{k}.nc", k=range(M_LATTICES["n_samples"])),
+        expand("results/mrj2016/configs/{{lattice}}/sample{k}.nc", k=range(M_LATTICES["n_samples"])),
     wildcard_constraints:
         lattice="fcc|bcc",
     params:
         n_cells=lambda wildcards: M_LATTICES[f"{wildcards.lattice}_cells"],
         seed=config["seed"],
     log:
-        M_RESULTS + "/logs/{lattice}_samples.log",
+        "results/mrj2016/logs/{lattice}_samples.log",
     threads: 1
     script:
         "../scripts/mrj2016/lattice_samples.py"
@@ -138,35 +106,13 @@ rule mrj2016_lattice_samples:
 # --------------------------------------------------------------------------- describe
 
 
-def m_describe_settings(kind, system, merge=False):
-    """The config values a describe job of one kind uses, and nothing else (so that changing
-    another kind's keys reruns none of its jobs): keyword arguments of
-    randmedia.describe.sphere_samples.describe (and, for the merge, of summarize).
-    descriptors.chunk_size only sets how samples are split into jobs (the chunk files and
-    `first`), not any value; number_variance.fit_r_min is used by the merge alone."""
-    if kind == "correlation":
-        settings = {"descriptors": {key: value for key, value in M_DESCRIPTORS.items()
-                                    if key != "chunk_size"}}
-        if merge:  # the Eq. (11) transform runs on k <= spectral.k_max
-            settings["spectral"] = {"k_max": M_SPECTRAL["k_max"]}
-        return settings
-    if kind == "spectral":
-        return {"spectral": M_SPECTRAL, "table_k": M_TABLE_K.get(system, [])}
-    if kind == "points":
-        return {"pores": M_PORES, "seed": config["seed"]}
-    if merge:
-        return {"windows": M_WINDOWS, "seed": config["seed"]}
-    return {"windows": {key: value for key, value in M_WINDOWS.items() if key != "fit_r_min"},
-            "seed": config["seed"]}
-
-
 rule mrj2016_describe_chunk:
     """One descriptor kind of one chunk of a system's samples (per-sample values)."""
     input:
         samples=m_chunk_samples,
         code=script_sources("../scripts/mrj2016/describe_chunk.py"),
     output:
-        M_RESULTS + "/descriptors/{system}/{kind}_chunk{c}.nc",
+        "results/mrj2016/descriptors/{system}/{kind}_chunk{c}.nc",
     wildcard_constraints:
         system=M_SYSTEM_CONSTRAINT,
         kind=M_KIND_CONSTRAINT,
@@ -175,22 +121,12 @@ rule mrj2016_describe_chunk:
         first=lambda wildcards: int(wildcards.c) * M_CHUNK,
         settings=lambda wildcards: m_describe_settings(wildcards.kind, wildcards.system),
     log:
-        M_RESULTS + "/logs/{system}_{kind}_chunk{c}.log",
+        "results/mrj2016/logs/{system}_{kind}_chunk{c}.log",
     threads: 1
     resources:
         mem_mb=3000,
     script:
         "../scripts/mrj2016/describe_chunk.py"
-
-
-def m_describe_inputs(wildcards):
-    """The chunk files of a system with several chunks; its samples when they form one chunk
-    (then the merge job computes them itself: one job instead of two)."""
-    if m_n_chunks(wildcards.system) == 1:
-        return {"samples": M_SAMPLES[wildcards.system]}
-    return {"chunks": expand(M_RESULTS + "/descriptors/{system}/{kind}_chunk{c}.nc",
-                             system=wildcards.system, kind=wildcards.kind,
-                             c=range(m_n_chunks(wildcards.system)))}
 
 
 rule mrj2016_describe:
@@ -200,14 +136,14 @@ rule mrj2016_describe:
         unpack(m_describe_inputs),
         code=script_sources("../scripts/mrj2016/describe_merge.py"),
     output:
-        M_RESULTS + "/descriptors/{system}_{kind}.nc",
+        "results/mrj2016/descriptors/{system}_{kind}.nc",
     wildcard_constraints:
         system=M_SYSTEM_CONSTRAINT,
         kind=M_KIND_CONSTRAINT,
     params:
         settings=lambda wildcards: m_describe_settings(wildcards.kind, wildcards.system, merge=True),
     log:
-        M_RESULTS + "/logs/{system}_{kind}.log",
+        "results/mrj2016/logs/{system}_{kind}.log",
     threads: 1
     resources:
         mem_mb=3000,
@@ -261,12 +197,12 @@ rule mrj2016_figure:
         unpack(lambda wildcards: M_FIGURE_INPUTS[int(wildcards.nn)]),
         code=script_sources("../scripts/mrj2016/figure.py"),
     output:
-        pdf=M_RESULTS + "/figures/fig{nn}.pdf",
-        png=M_RESULTS + "/figures/fig{nn}.png",
+        pdf="results/mrj2016/figures/fig{nn}.pdf",
+        png="results/mrj2016/figures/fig{nn}.png",
     params:
         settings=lambda wildcards: M_FIGURE_PARAMS[int(wildcards.nn)],
     log:
-        M_RESULTS + "/logs/fig{nn}.log",
+        "results/mrj2016/logs/fig{nn}.log",
     wildcard_constraints:
         nn="|".join(f"{n:02d}" for n in range(1, 14)),
     script:
@@ -292,11 +228,11 @@ rule mrj2016_table:
         reference=lambda wildcards: M_REFERENCE.get(f"table{wildcards.n}", M_REFERENCE["quoted"]),
         code=script_sources("../scripts/mrj2016/table.py"),
     output:
-        M_RESULTS + "/tables/table{n}.csv",
+        "results/mrj2016/tables/table{n}.csv",
     params:
         overlapping_phi=M_OVERLAPPING["phi"],
     log:
-        M_RESULTS + "/logs/table{n}.log",
+        "results/mrj2016/logs/table{n}.log",
     wildcard_constraints:
         n="[1-5]",
     script:
@@ -307,13 +243,13 @@ rule mrj2016_comparison:
     """comparison.csv: every table cell and quoted number against ours (+ comparison_notes.csv)."""
     input:
         unpack(lambda wildcards: M_TABLE_INPUTS[1]),
-        tables=expand(M_RESULTS + "/tables/table{n}.csv", n=M_TABLES),
+        tables=expand("results/mrj2016/tables/table{n}.csv", n=M_TABLES),
         references=list(M_REFERENCE.values()),
         equilibrium_validation=EQUILIBRIUM_TARGETS[3],
         code=script_sources("../scripts/mrj2016/comparison.py"),
     output:
-        comparison=M_RESULTS + "/comparison.csv",
-        notes=M_RESULTS + "/comparison_notes.csv",
+        comparison="results/mrj2016/comparison.csv",
+        notes="results/mrj2016/comparison_notes.csv",
     params:
         k_sigma=config["comparison"]["k_sigma"],
         overlapping_phi=M_OVERLAPPING["phi"],
@@ -321,17 +257,17 @@ rule mrj2016_comparison:
         windows=M_WINDOWS,
         n_samples={system: len(samples) for system, samples in M_SAMPLES.items()},
     log:
-        M_RESULTS + "/logs/comparison.log",
+        "results/mrj2016/logs/comparison.log",
     script:
         "../scripts/mrj2016/comparison.py"
 
 
-M_FIGURES_OUT = [M_RESULTS + f"/figures/fig{n:02d}.{ext}" for n in range(1, 14) for ext in ("pdf", "png")]
-M_TABLES_OUT = [M_RESULTS + f"/tables/table{n}.csv" for n in M_TABLES]
+M_FIGURES_OUT = [f"results/mrj2016/figures/fig{n:02d}.{ext}" for n in range(1, 14) for ext in ("pdf", "png")]
+M_TABLES_OUT = [f"results/mrj2016/tables/table{n}.csv" for n in M_TABLES]
 
 MRJ2016_TARGETS = (
     M_FIGURES_OUT + M_TABLES_OUT
-    + [M_RESULTS + "/comparison.csv", M_RESULTS + "/comparison_notes.csv"]
+    + ["results/mrj2016/comparison.csv", "results/mrj2016/comparison_notes.csv"]
     + EQUILIBRIUM_TARGETS
     + JAMMED_TARGETS
 )
@@ -349,8 +285,8 @@ for _n in range(1, 14):
         name:
             f"mrj2016_fig{_n:02d}"
         input:
-            M_RESULTS + f"/figures/fig{_n:02d}.pdf",
-            M_RESULTS + f"/figures/fig{_n:02d}.png",
+            f"results/mrj2016/figures/fig{_n:02d}.pdf",
+            f"results/mrj2016/figures/fig{_n:02d}.png",
 
 
 for _n in M_TABLES:
@@ -359,4 +295,4 @@ for _n in M_TABLES:
         name:
             f"mrj2016_table{_n}"
         input:
-            M_RESULTS + f"/tables/table{_n}.csv",
+            f"results/mrj2016/tables/table{_n}.csv",

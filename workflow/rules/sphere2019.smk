@@ -31,20 +31,6 @@ SPHERE_FIG08_CUBED = SPHERE_LJ_R5 + SPHERE_ALPHA_CUBED
 SPHERE_A_MIN_PLOT = SPHERE["fit"]["a_min_rho_half"] / SPHERE_FLUIDS["density"] ** 0.5
 
 
-def sphere_figure(number, second_reading=False):
-    """Output files of the rule of paper figure ``number``; with ``second_reading`` also
-    figNN_alpha_cubed (the same figure for the second reading of Eq. 12b)."""
-    files = {ext: f"results/sphere2019/figures/fig{number:02d}.{ext}" for ext in ("pdf", "png")}
-    if second_reading:
-        files.update({f"alpha_cubed_{ext}": f"results/sphere2019/figures/fig{number:02d}_alpha_cubed.{ext}"
-                      for ext in ("pdf", "png")})
-    return files
-
-
-def sphere_descriptors(systems):
-    return expand(SPHERE_DESCRIPTOR, system=systems)
-
-
 #: the keys of sphere2019.patterns each pattern reads (workflow/scripts/sphere2019/pattern.py),
 #: so that e.g. fibonacci_points reruns the Fibonacci grid alone; the grids use no seed
 SPHERE_PATTERN_KEYS = {

@@ -10,12 +10,17 @@ pixel-centre digitization adds no bias to S2, see randmedia.generate.disks).
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 import xarray as xr
 
 from randmedia.compare import compare
 from randmedia.describe.two_phase import RadialBinning
 from randmedia.stats import standard_error
+if TYPE_CHECKING:
+    import pandas as pd
+
 from randmedia.theory.overlapping import (chord_rate, lineal_path_void, pore_size_complementary_cdf,
                                           pore_size_moment, s2_void, specific_surface,
                                           surface_surface, surface_void)
@@ -383,7 +388,6 @@ def surface_pore_numbers(fits: xr.Dataset) -> "pd.DataFrame":
     """numbers.csv rows of the Sec. V A-B fits (layout of :func:`construction_numbers`)."""
     import pandas as pd
 
-    a = float(fits.attrs["a"])
     per_phi2 = [
         ("s", "s_sem", "1/pixel", "level-set specific surface (tuned to Eq. 22)"),
         ("sigma", None, "pixel", "tuned Gaussian width"),

@@ -4,10 +4,15 @@ and <R^2>/<R> (Eq. 30). Conventions (per-sample fits, SEM, chi^2/dof): :mod:`ran
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING
+
 import numpy as np
 from scipy.optimize import curve_fit
 
 from randmedia.fit import FitResult
+
+if TYPE_CHECKING:
+    import xarray as xr
 
 
 def lineal_path_length(z, lineal_path, phi1: float, sem=None, *,

@@ -1,18 +1,18 @@
 """Rules debye2020_media_chords / debye2020_overlapping_disks_chords: L(z) and p(z) of the void phase."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-from randmedia.describe.chords import lineal_path_and_chords  # noqa: E402
-from randmedia.generate import PHASE_IMAGE  # noqa: E402
-from randmedia.io import read_dataset, write_dataset  # noqa: E402
-from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
+from randmedia.describe.chords import lineal_path_and_chords
+from randmedia.generate import PHASE_IMAGE
+from randmedia.io import read_dataset, write_dataset
+from randmedia.seeding import sample_rng, sample_seed
 
-params = dict(snakemake.params.items())  # noqa: F821
+params = dict(snakemake.params.items())
 images = np.stack([read_dataset(path, PHASE_IMAGE)["phase"].values
-                   for path in snakemake.input.samples])  # noqa: F821
+                   for path in snakemake.input.samples])
 sampling = dict(params["chords"])
 z_max = sampling.pop("z_max_over_length") * params["length"]
 seed = sample_seed(params["seed"], "debye2020", params["system"], 0)
@@ -21,4 +21,4 @@ chords.attrs.update({"phi2": params["phi2"], "length_scale": params["length"],
                      "system": params["system"]})
 log.info("%s: mean chord %.2f px over %d images", params["system"],
          chords["mean_chord_samples"].values.mean(), images.shape[0])
-write_dataset(chords, snakemake.output[0], rule=snakemake.rule, seed=seed, config=params)  # noqa: F821
+write_dataset(chords, snakemake.output[0], rule=snakemake.rule, seed=seed, config=params)

@@ -1,21 +1,21 @@
 """Rule debye2020_comparison: results/debye2020/comparison.csv."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from randmedia.compare import COLUMNS, comparison_frame, read_reference  # noqa: E402
-from randmedia.compare.debye2020 import (construction_rows, lineal_size_rows,  # noqa: E402
+from randmedia.compare import COLUMNS, comparison_frame, read_reference
+from randmedia.compare.debye2020 import (construction_rows, lineal_size_rows,
                                          overlapping_disks_chord_rows, overlapping_disks_pore_rows,
                                          overlapping_disks_s2_rows, overlapping_disks_surface_rows,
                                          parameter_rows, surface_pore_rows)
-from randmedia.describe.chords import CHORDS  # noqa: E402
-from randmedia.describe.pore_size import PORES  # noqa: E402
-from randmedia.describe.surface import SURFACE  # noqa: E402
-from randmedia.describe.two_phase import TWO_POINT  # noqa: E402
-from randmedia.io import VariableSpec, read_dataset, write_csv  # noqa: E402
+from randmedia.describe.chords import CHORDS
+from randmedia.describe.pore_size import PORES
+from randmedia.describe.surface import SURFACE
+from randmedia.describe.two_phase import TWO_POINT
+from randmedia.io import VariableSpec, read_dataset, write_csv
 
-params = dict(snakemake.params.items())  # noqa: F821
-inputs = snakemake.input  # noqa: F821
+params = dict(snakemake.params.items())
+inputs = snakemake.input
 k_sigma = params["k_sigma"]
 disks = params["overlapping_disks"]
 radius, phi2 = disks["radius"], disks["phi2"]
@@ -54,4 +54,4 @@ log.info("%d rows, %d passed", len(frame), int(frame["passed"].sum()))
 for _, row in frame[~frame["passed"]].iterrows():
     log.info("not passed: %s [%s]: published %.5g, ours %.5g +- %.2g (tolerance %.2g)", row["quantity"],
              row["key"], row["published"], row["ours"], row["ours_sem"], row["tolerance"])
-write_csv(frame, snakemake.output[0])  # noqa: F821
+write_csv(frame, snakemake.output[0])

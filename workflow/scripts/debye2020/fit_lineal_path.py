@@ -1,19 +1,19 @@
 """Rule debye2020_fit_lineal_path: L_w of Eq. (29) per phi2 and <R^2>/<R> of Eq. (30)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-import numpy as np  # noqa: E402
-import xarray as xr  # noqa: E402
+import numpy as np
+import xarray as xr
 
-from randmedia.describe.chords import CHORDS  # noqa: E402
-from randmedia.fit import per_sample_mean  # noqa: E402
-from randmedia.fit.debye2020 import lineal_path_length, r2_over_r  # noqa: E402
-from randmedia.io import read_dataset, write_dataset  # noqa: E402
+from randmedia.describe.chords import CHORDS
+from randmedia.fit import per_sample_mean
+from randmedia.fit.debye2020 import lineal_path_length, r2_over_r
+from randmedia.io import read_dataset, write_dataset
 
-params = dict(snakemake.params.items())  # noqa: F821
+params = dict(snakemake.params.items())
 rows = []
-for path in snakemake.input.chords:  # noqa: F821
+for path in snakemake.input.chords:
     ds = read_dataset(path, CHORDS, attrs=["phi2"])
     phi2 = float(ds.attrs["phi2"])
     z, phi1 = ds["z"].values, 1.0 - phi2
@@ -43,5 +43,5 @@ fits = xr.Dataset(
     coords={"phi2": ("phi2", phi2, {"units": "1", "long_name": "volume fraction of phase 2"})},
     attrs={"a": a},
 )
-write_dataset(fits.sortby("phi2"), snakemake.output[0], rule=snakemake.rule, seed=None,  # noqa: F821
+write_dataset(fits.sortby("phi2"), snakemake.output[0], rule=snakemake.rule, seed=None,
               config=params)

@@ -2,16 +2,16 @@
 (Eqs. 24, 26 deviations, Eq. 27 fits and the p1 cubic, Eq. 28, Euler characteristic, wrapping)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from randmedia.describe.pore_size import PORES  # noqa: E402
-from randmedia.describe.surface import SURFACE  # noqa: E402
-from randmedia.fit.debye2020 import surface_pore_fits  # noqa: E402
-from randmedia.io import read_dataset, write_dataset  # noqa: E402
+from randmedia.describe.pore_size import PORES
+from randmedia.describe.surface import SURFACE
+from randmedia.fit.debye2020 import surface_pore_fits
+from randmedia.io import read_dataset, write_dataset
 
-params = dict(snakemake.params.items())  # noqa: F821
+params = dict(snakemake.params.items())
 systems = {}
-for surface_path, pores_path in zip(snakemake.input.surface, snakemake.input.pores):  # noqa: F821
+for surface_path, pores_path in zip(snakemake.input.surface, snakemake.input.pores):
     surface = read_dataset(surface_path, SURFACE, attrs=["phi2", "sigma"])
     pores = read_dataset(pores_path, PORES, attrs=["phi2"])
     systems[float(surface.attrs["phi2"])] = (surface, pores)
@@ -24,4 +24,4 @@ for i, phi2 in enumerate(fits["phi2"].values):
              fits["mean_delta"].values[i], 100 * fits["eq28_rel_error"].values[i],
              fits["euler_slope"].values[i], fits["euler_formula"].values[i])
 log.info("p1 cubic coefficients %s (paper 1.05, -2.41, 4.16)", fits["p1_coefficients"].values)
-write_dataset(fits, snakemake.output[0], rule=snakemake.rule, seed=None, config=params)  # noqa: F821
+write_dataset(fits, snakemake.output[0], rule=snakemake.rule, seed=None, config=params)

@@ -2,27 +2,27 @@
 samples digitized to L x L images (pixel-centre rule) with the disk centres beside them."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821 (snakemake is injected by Snakemake)
+log = start_job(snakemake)
 
-import math  # noqa: E402
-from pathlib import Path  # noqa: E402
+import math
+from pathlib import Path
 
-import xarray as xr  # noqa: E402
+import xarray as xr
 
-from randmedia.generate import particle_config_dataset, phase_image_dataset  # noqa: E402
-from randmedia.generate.disks import digitize_disks  # noqa: E402
-from randmedia.generate.hard_spheres import (MCSettings, contact_histogram_dataset,  # noqa: E402
+from randmedia.generate import particle_config_dataset, phase_image_dataset
+from randmedia.generate.disks import digitize_disks
+from randmedia.generate.hard_spheres import (MCSettings, contact_histogram_dataset,
                                              run_chain, sample_attrs)
-from randmedia.io import write_dataset  # noqa: E402
-from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
-from randmedia.theory.hard_spheres import compressibility_factor  # noqa: E402
+from randmedia.io import write_dataset
+from randmedia.seeding import sample_rng, sample_seed
+from randmedia.theory.hard_spheres import compressibility_factor
 
-params = dict(snakemake.params.items())  # noqa: F821
+params = dict(snakemake.params.items())
 chain, side, radius, phi2 = params["chain"], params["L"], params["radius"], params["phi2"]
 n_disks = round(phi2 * side * side / (math.pi * radius * radius))
 seed = sample_seed(params["seed"], "debye2020", f"hard_disks_phi{phi2:g}", chain)
 settings = MCSettings(**params["mc"])
-outputs = [Path(p) for p in snakemake.output]  # noqa: F821
+outputs = [Path(p) for p in snakemake.output]
 checkpoint = outputs[0].with_name(f".hard_disks_chain{chain}.checkpoint.npz")
 result = run_chain(n_disks, [side, side], 2.0 * radius, len(outputs), sample_rng(seed), settings,
                    checkpoint=checkpoint, checkpoint_seconds=params["checkpoint_seconds"], log=log,
@@ -41,7 +41,7 @@ for j, path in enumerate(outputs):
     dataset = xr.merge([phase_image_dataset(image, {}), particles,
                         contact_histogram_dataset(result, j, settings)], combine_attrs="override")
     dataset.attrs = {**particles.attrs, **attrs}
-    write_dataset(dataset, path, rule=snakemake.rule, seed=seed,  # noqa: F821
+    write_dataset(dataset, path, rule=snakemake.rule, seed=seed,
                   config={**params, "sample": k})
     log.info("sample %d: reduced pressure %.4f (EOS %.4f), MSD since previous %.2f D^2, "
              "digitized phi2 %.4f", k, attrs["reduced_pressure"], eos_z,

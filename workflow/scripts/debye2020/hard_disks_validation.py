@@ -2,24 +2,24 @@
 against the 2D equation of state; per-sample diagnostics and comparison rows."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from randmedia.compare import comparison_frame  # noqa: E402
-from randmedia.compare.hard_particles import (decorrelation_rows, diagnostics_frame,  # noqa: E402
+from randmedia.compare import comparison_frame
+from randmedia.compare.hard_particles import (decorrelation_rows, diagnostics_frame,
                                               digitized_fraction_row, pooled_contact,
                                               pressure_row)
-from randmedia.generate import PHASE_IMAGE  # noqa: E402
-from randmedia.generate.hard_spheres import MCSettings  # noqa: E402
-from randmedia.io import VariableSpec, read_dataset, write_csv  # noqa: E402
-from randmedia.plot.hard_particles import eos_validation_figure  # noqa: E402
+from randmedia.generate import PHASE_IMAGE
+from randmedia.generate.hard_spheres import MCSettings
+from randmedia.io import VariableSpec, read_dataset, write_csv
+from randmedia.plot.hard_particles import eos_validation_figure
 
-params = dict(snakemake.params.items())  # noqa: F821
+params = dict(snakemake.params.items())
 spec = {**PHASE_IMAGE, "position": VariableSpec(("particle", "xyz"), "pixel"),
         "box": VariableSpec(("xyz", "vec"), "pixel"), "contact_pairs": VariableSpec(("contact_bin",), "1")}
 datasets = [read_dataset(path, spec, attrs=["reduced_pressure", "eos_reduced_pressure",
                                             "phi2_digitized", "phi2_disks", "n_particles",
                                             "diameter", "contact_measurements", "chain", "sample"])
-            for path in snakemake.input.samples]  # noqa: F821
+            for path in snakemake.input.samples]
 settings = MCSettings(**params["mc"])
 frame = diagnostics_frame(datasets)
 pooled = pooled_contact(datasets, settings)
@@ -35,10 +35,10 @@ for row in rows:
              row["ours"], row["ours_sem"], row["published"], row["tolerance"], row["passed"])
 log.info("pooled contact fit over %d measurements: g(D+) = %.4f, beta p / rho = %.4f",
          pooled["measurements"], pooled["contact_value"], pooled["reduced_pressure"])
-write_csv(frame, snakemake.output.diagnostics)  # noqa: F821
-write_csv(comparison_frame(rows), snakemake.output.comparison)  # noqa: F821
+write_csv(frame, snakemake.output.diagnostics)
+write_csv(comparison_frame(rows), snakemake.output.comparison)
 eos_validation_figure(frame, pooled, settings, dim=2, phi=phi,
                       eos_names={"henderson": "Henderson", "santos": "Santos et al."},
                       sample_msd=settings.sample_msd,
                       title=f"hard disks, $\\phi_2$ = {phi:.4f}, N = {pooled['n_particles']}",
-                      pdf_path=snakemake.output.pdf)  # noqa: F821
+                      pdf_path=snakemake.output.pdf)

@@ -2,19 +2,19 @@
 one system's images on Ma-Torquato level sets whose Gaussian width is tuned to the exact s."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-import numpy as np  # noqa: E402
+import numpy as np
 
-from randmedia.describe.pore_size import pore_size_functions  # noqa: E402
-from randmedia.describe.surface import surface_functions, tune_sigma  # noqa: E402
-from randmedia.generate import PHASE_IMAGE  # noqa: E402
-from randmedia.io import read_dataset, write_dataset  # noqa: E402
-from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
-from randmedia.theory.debye_formulas import model_specific_surface  # noqa: E402
+from randmedia.describe.pore_size import pore_size_functions
+from randmedia.describe.surface import surface_functions, tune_sigma
+from randmedia.generate import PHASE_IMAGE
+from randmedia.io import read_dataset, write_dataset
+from randmedia.seeding import sample_rng, sample_seed
+from randmedia.theory.debye_formulas import model_specific_surface
 
-params = dict(snakemake.params.items())  # noqa: F821
-datasets = [read_dataset(path, PHASE_IMAGE) for path in snakemake.input.samples]  # noqa: F821
+params = dict(snakemake.params.items())
+datasets = [read_dataset(path, PHASE_IMAGE) for path in snakemake.input.samples]
 images = np.stack([ds["phase"].values for ds in datasets])
 target = dict(params["target"])
 if target["model"] == "hard_disks":  # radius (pixels) and the disks' exact phi2 come with the images
@@ -43,5 +43,5 @@ for ds in (surface, pores):
 log.info("%s: s = %.6g +- %.2g, <delta> = %.4g px", params["system"], surface["s_samples"].values.mean(),
          surface["s_samples"].values.std(ddof=1) / np.sqrt(images.shape[0]),
          pores["mean_delta_samples"].values.mean())
-write_dataset(surface, snakemake.output.surface, rule=snakemake.rule, seed=None, config=params)  # noqa: F821
-write_dataset(pores, snakemake.output.pores, rule=snakemake.rule, seed=seed, config=params)  # noqa: F821
+write_dataset(surface, snakemake.output.surface, rule=snakemake.rule, seed=None, config=params)
+write_dataset(pores, snakemake.output.pores, rule=snakemake.rule, seed=seed, config=params)

@@ -1,22 +1,22 @@
 """Rule debye2020_media_sample: one Debye random medium by the accelerated YT construction."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-import functools  # noqa: E402
-from pathlib import Path  # noqa: E402
+import functools
+from pathlib import Path
 
-from randmedia.generate import phase_image_dataset  # noqa: E402
-from randmedia.generate.yeong_torquato import AnnealingSchedule, construct  # noqa: E402
-from randmedia.io import write_dataset  # noqa: E402
-from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
-from randmedia.theory.debye import debye_s2  # noqa: E402
+from randmedia.generate import phase_image_dataset
+from randmedia.generate.yeong_torquato import AnnealingSchedule, construct
+from randmedia.io import write_dataset
+from randmedia.seeding import sample_rng, sample_seed
+from randmedia.theory.debye import debye_s2
 
-params = dict(snakemake.params.items())  # noqa: F821
-index = int(snakemake.wildcards.k)  # noqa: F821
+params = dict(snakemake.params.items())
+index = int(snakemake.wildcards.k)
 phi2 = params["phi2"]
 seed = sample_seed(params["seed"], "debye2020", f"debye_phi{phi2:g}", index)
-output = Path(snakemake.output[0])  # noqa: F821
+output = Path(snakemake.output[0])
 result = construct(
     functools.partial(debye_s2, phi2=phi2, a=params["a"]), phi2, params["L"], params["lc"],
     sample_rng(seed), AnnealingSchedule(**params["schedule"]),
@@ -29,5 +29,5 @@ dataset = phase_image_dataset(result.image, {
     "delta_S2": result.delta_s2, "trials": result.stats["trials"],
     "accepted": result.stats["accepted"], "construction_seconds": result.stats["seconds"],
 })
-write_dataset(dataset, output, rule=snakemake.rule, seed=seed,  # noqa: F821
+write_dataset(dataset, output, rule=snakemake.rule, seed=seed,
               config={**params, "sample": index})

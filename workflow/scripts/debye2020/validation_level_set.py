@@ -2,15 +2,15 @@
 disks against the exact Eqs. (35)-(37)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from randmedia.describe.pore_size import PORES  # noqa: E402
-from randmedia.describe.surface import SURFACE  # noqa: E402
-from randmedia.io import read_dataset  # noqa: E402
-from randmedia.plot.debye2020 import overlapping_disks_level_set  # noqa: E402
+from randmedia.describe.pore_size import PORES
+from randmedia.describe.surface import SURFACE
+from randmedia.io import read_dataset
+from randmedia.plot.debye2020 import overlapping_disks_level_set
 
-params = dict(snakemake.params.items())  # noqa: F821
-overlapping_disks_level_set(read_dataset(snakemake.input.surface, SURFACE, attrs=["sigma"]),  # noqa: F821
-                            read_dataset(snakemake.input.pores, PORES),  # noqa: F821
+params = dict(snakemake.params.items())
+overlapping_disks_level_set(read_dataset(snakemake.input.surface, SURFACE, attrs=["sigma"]),
+                            read_dataset(snakemake.input.pores, PORES),
                             radius=params["radius"], phi2=params["phi2"],
-                            pdf_path=snakemake.output.pdf)  # noqa: F821
+                            pdf_path=snakemake.output.pdf)

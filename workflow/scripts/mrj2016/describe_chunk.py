@@ -1,23 +1,23 @@
 """Rule mrj2016_describe_chunk: one descriptor kind over one chunk of a system's samples."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-import time  # noqa: E402
+import time
 
-from randmedia.describe import sphere_samples  # noqa: E402
-from randmedia.io import write_dataset  # noqa: E402
+from randmedia.describe import sphere_samples
+from randmedia.io import write_dataset
 
-params = dict(snakemake.params.items())  # noqa: F821
-system, kind = snakemake.wildcards.system, snakemake.wildcards.kind  # noqa: F821
-paths = list(snakemake.input.samples)  # noqa: F821
+params = dict(snakemake.params.items())
+system, kind = snakemake.wildcards.system, snakemake.wildcards.kind
+paths = list(snakemake.input.samples)
 start = time.perf_counter()
 configs = [sphere_samples.load_configuration(path) for path in paths]
 log.info("%s %s: samples %d-%d", system, kind, params["first"], params["first"] + len(configs) - 1)
 dataset, used = sphere_samples.describe(kind, system, configs, first=params["first"],
-                                        nthreads=snakemake.threads, log=log,  # noqa: F821
+                                        nthreads=snakemake.threads, log=log,
                                         **params["settings"])
 elapsed = time.perf_counter() - start
 log.info("%d samples in %.1f s (%.2f s per sample)", len(configs), elapsed, elapsed / len(configs))
 dataset.attrs["sample_files"] = " ".join(paths)
-write_dataset(dataset, snakemake.output[0], rule=snakemake.rule, seed=None, config=used)  # noqa: F821
+write_dataset(dataset, snakemake.output[0], rule=snakemake.rule, seed=None, config=used)

@@ -2,26 +2,26 @@
 liquid (D = 1, periodic cube); every sample with its diagnostics and bond order."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821 (snakemake is injected by Snakemake)
+log = start_job(snakemake)
 
-from pathlib import Path  # noqa: E402
+from pathlib import Path
 
-import numpy as np  # noqa: E402
-import xarray as xr  # noqa: E402
+import numpy as np
+import xarray as xr
 
-from randmedia.describe.bond_order import crystalline_fraction, global_q6  # noqa: E402
-from randmedia.generate import particle_config_dataset  # noqa: E402
-from randmedia.generate.hard_spheres import (MCSettings, contact_histogram_dataset,  # noqa: E402
+from randmedia.describe.bond_order import crystalline_fraction, global_q6
+from randmedia.generate import particle_config_dataset
+from randmedia.generate.hard_spheres import (MCSettings, contact_histogram_dataset,
                                              cubic_box, run_chain, sample_attrs)
-from randmedia.io import write_dataset  # noqa: E402
-from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
-from randmedia.theory.hard_spheres import compressibility_factor  # noqa: E402
+from randmedia.io import write_dataset
+from randmedia.seeding import sample_rng, sample_seed
+from randmedia.theory.hard_spheres import compressibility_factor
 
-params = dict(snakemake.params.items())  # noqa: F821
+params = dict(snakemake.params.items())
 chain, n, phi = params["chain"], params["n_particles"], params["phi"]
 seed = sample_seed(params["seed"], "mrj2016", "equilibrium", chain)
 settings = MCSettings(**params["mc"])
-outputs = [Path(p) for p in snakemake.output]  # noqa: F821
+outputs = [Path(p) for p in snakemake.output]
 checkpoint = outputs[0].with_name(f".equilibrium_chain{chain}.checkpoint.npz")
 box_lengths = cubic_box(n, phi, 3)
 result = run_chain(n, box_lengths, 1.0, len(outputs), sample_rng(seed), settings,
@@ -40,7 +40,7 @@ for j, path in enumerate(outputs):
     dataset = xr.merge([particles, contact_histogram_dataset(result, j, settings)],
                        combine_attrs="override")
     dataset.attrs = {**particles.attrs, **attrs}
-    write_dataset(dataset, path, rule=snakemake.rule, seed=seed,  # noqa: F821
+    write_dataset(dataset, path, rule=snakemake.rule, seed=seed,
                   config={**params, "sample": k})
     log.info("sample %d: beta p / rho %.4f (EOS %.4f), Q6 %.4f, crystal-like %.4f, "
              "MSD since previous %.2f D^2", k, attrs["reduced_pressure"], eos_z,

@@ -2,23 +2,23 @@
 against the EOS; per-sample diagnostics (decorrelation, bond order) and comparison rows."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from randmedia.compare import comparison_frame  # noqa: E402
-from randmedia.compare.hard_particles import (decorrelation_rows, diagnostics_frame,  # noqa: E402
+from randmedia.compare import comparison_frame
+from randmedia.compare.hard_particles import (decorrelation_rows, diagnostics_frame,
                                               pooled_contact, pressure_row)
-from randmedia.generate import PARTICLE_CONFIG  # noqa: E402
-from randmedia.generate.hard_spheres import MCSettings  # noqa: E402
-from randmedia.io import VariableSpec, read_dataset, write_csv  # noqa: E402
-from randmedia.plot.hard_particles import eos_validation_figure  # noqa: E402
+from randmedia.generate import PARTICLE_CONFIG
+from randmedia.generate.hard_spheres import MCSettings
+from randmedia.io import VariableSpec, read_dataset, write_csv
+from randmedia.plot.hard_particles import eos_validation_figure
 
-params = dict(snakemake.params.items())  # noqa: F821
+params = dict(snakemake.params.items())
 spec = {**PARTICLE_CONFIG, "contact_pairs": VariableSpec(("contact_bin",), "1")}
 datasets = [read_dataset(path, spec, attrs=["reduced_pressure", "eos_reduced_pressure", "phi",
                                             "global_q6", "crystalline_fraction", "n_particles",
                                             "diameter", "contact_measurements", "chain",
                                             "sample"])
-            for path in snakemake.input.samples]  # noqa: F821
+            for path in snakemake.input.samples]
 settings = MCSettings(**params["mc"])
 frame = diagnostics_frame(datasets)
 pooled = pooled_contact(datasets, settings)
@@ -36,10 +36,10 @@ log.info("pooled contact fit over %d measurements: g(D+) = %.4f, beta p / rho = 
 log.info("global Q6: max %.4f, crystal-like fraction: max %.4f; MSD between samples: min %.3f D^2",
          frame["global_q6"].max(), frame["crystalline_fraction"].max(),
          frame["msd_since_previous"].min())
-write_csv(frame, snakemake.output.diagnostics)  # noqa: F821
-write_csv(comparison_frame(rows), snakemake.output.comparison)  # noqa: F821
+write_csv(frame, snakemake.output.diagnostics)
+write_csv(comparison_frame(rows), snakemake.output.comparison)
 eos_validation_figure(frame, pooled, settings, dim=3, phi=phi,
                       eos_names={"kolafa": "Kolafa", "carnahan_starling": "Carnahan-Starling"},
                       sample_msd=settings.sample_msd,
                       title=f"hard spheres, $\\phi$ = {phi:.4f}, N = {pooled['n_particles']}",
-                      pdf_path=snakemake.output.pdf)  # noqa: F821
+                      pdf_path=snakemake.output.pdf)

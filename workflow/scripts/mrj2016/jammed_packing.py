@@ -1,21 +1,21 @@
 """Rule mrj2016_jammed_packing: one strictly jammed MRJ packing (randmedia.generate.mrj)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from pathlib import Path  # noqa: E402
+from pathlib import Path
 
-from randmedia.describe import bond_order, jamming  # noqa: E402
-from randmedia.generate.jammed import packing_dataset  # noqa: E402
-from randmedia.generate.mrj import MRJProtocol, make_packing  # noqa: E402
-from randmedia.io import write_dataset  # noqa: E402
-from randmedia.seeding import sample_seed  # noqa: E402
+from randmedia.describe import bond_order, jamming
+from randmedia.generate.jammed import packing_dataset
+from randmedia.generate.mrj import MRJProtocol, make_packing
+from randmedia.io import write_dataset
+from randmedia.seeding import sample_seed
 
-params = dict(snakemake.params.items())  # noqa: F821
-system = snakemake.wildcards.system  # noqa: F821
-index = int(snakemake.wildcards.k)  # noqa: F821
+params = dict(snakemake.params.items())
+system = snakemake.wildcards.system
+index = int(snakemake.wildcards.k)
 seed = sample_seed(params["seed"], "mrj2016", system, index)
-output = Path(snakemake.output[0])  # noqa: F821
+output = Path(snakemake.output[0])
 
 protocol = MRJProtocol.from_config(params)
 packing = make_packing(seed, params["n_particles"], protocol,
@@ -35,5 +35,5 @@ log.info("phi = %.6f, %d LPs, %.1f s; backbone %d spheres, %d contacts (isostati
 dataset = packing_dataset(packing, analysis, {
     "system": system, "sample": index, "Q6": q6, "crystal_fraction": crystal,
     "bond_order_cutoff": cutoff})
-write_dataset(dataset, output, rule=snakemake.rule, seed=seed,  # noqa: F821
+write_dataset(dataset, output, rule=snakemake.rule, seed=seed,
               config={**params, "system": system, "sample": index})

@@ -1,18 +1,18 @@
 """Rule mrj2016_lattice_samples: fcc or bcc lattice of touching spheres, randomly translated copies."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-import re  # noqa: E402
+import re
 
-from randmedia.generate import particle_config_dataset  # noqa: E402
-from randmedia.generate.spheres import lattice_covering_radius, lattice_packing_fraction, lattice_spheres  # noqa: E402
-from randmedia.io import write_dataset  # noqa: E402
-from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
+from randmedia.generate import particle_config_dataset
+from randmedia.generate.spheres import lattice_covering_radius, lattice_packing_fraction, lattice_spheres
+from randmedia.io import write_dataset
+from randmedia.seeding import sample_rng, sample_seed
 
-params = dict(snakemake.params.items())  # noqa: F821
-lattice = snakemake.wildcards.lattice  # noqa: F821
-for path in snakemake.output:  # noqa: F821
+params = dict(snakemake.params.items())
+lattice = snakemake.wildcards.lattice
+for path in snakemake.output:
     index = int(re.search(r"sample(\d+)\.nc$", path).group(1))
     seed = sample_seed(params["seed"], "mrj2016", lattice, index)
     positions, box = lattice_spheres(lattice, params["n_cells"], rng=sample_rng(seed))
@@ -21,5 +21,5 @@ for path in snakemake.output:  # noqa: F821
     dataset = particle_config_dataset(positions, box, 1.0, {
         "system": lattice, "phi": lattice_packing_fraction(lattice), "n_cells": params["n_cells"],
         "covering_radius": lattice_covering_radius(lattice), "sample": index})
-    write_dataset(dataset, path, rule=snakemake.rule, seed=seed,  # noqa: F821
+    write_dataset(dataset, path, rule=snakemake.rule, seed=seed,
                   config={**params, "lattice": lattice, "sample": index})

@@ -1,15 +1,15 @@
 """Rule sphere2019_comparison: results/sphere2019/comparison.csv (a row per Table I entry)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-import pandas as pd  # noqa: E402
+import pandas as pd
 
-from randmedia.compare.sphere2019 import comparison  # noqa: E402
-from randmedia.io import write_csv  # noqa: E402
+from randmedia.compare.sphere2019 import comparison
+from randmedia.io import write_csv
 
-params = dict(snakemake.params.items())  # noqa: F821
-frame = comparison(pd.read_csv(snakemake.input.table), k_sigma=params["k_sigma"],  # noqa: F821
+params = dict(snakemake.params.items())
+frame = comparison(pd.read_csv(snakemake.input.table), k_sigma=params["k_sigma"],
                    rounding_margin=params["rounding_margin"])
 log.info("%d rows, %d passed", len(frame), int(frame["passed"].sum()))
-write_csv(frame, snakemake.output[0])  # noqa: F821
+write_csv(frame, snakemake.output[0])

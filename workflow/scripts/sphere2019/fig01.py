@@ -1,8 +1,8 @@
 """Rule sphere2019_fig01: the spherical-cap window (paper Fig. 1)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from randmedia.plot.sphere2019 import fig01_cap_schematic  # noqa: E402
+from randmedia.plot.sphere2019 import fig01_cap_schematic
 
-fig01_cap_schematic(snakemake.output.pdf)  # noqa: F821
+fig01_cap_schematic(snakemake.output.pdf)

@@ -2,11 +2,11 @@
 (fig06) and for its second reading (fig06_alpha_cubed)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of  # noqa: E402
-from randmedia.io import read_dataset  # noqa: E402
-from randmedia.plot.sphere2019 import fig06_snapshots  # noqa: E402
+from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of
+from randmedia.io import read_dataset
+from randmedia.plot.sphere2019 import fig06_snapshots
 
 
 def snapshots(paths):
@@ -18,6 +18,6 @@ def snapshots(paths):
     return panels
 
 
-inputs, outputs = snakemake.input, snakemake.output  # noqa: F821
+inputs, outputs = snakemake.input, snakemake.output
 fig06_snapshots(snapshots(inputs.configs), outputs.pdf)
 fig06_snapshots(snapshots(inputs.alpha_cubed), outputs.alpha_cubed_pdf)

@@ -1,18 +1,18 @@
 """Rule sphere2019_fluid: canonical Monte Carlo of one fluid on the sphere (Sec. V)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from pathlib import Path  # noqa: E402
+from pathlib import Path
 
-from randmedia.theory.sphere_caps import cap_grid, cos_thresholds  # noqa: E402
-from randmedia.generate.sphere_mc import MCSchedule, Potential, run_fluid  # noqa: E402
-from randmedia.generate.sphere_surface import points_dataset  # noqa: E402
-from randmedia.io import write_dataset  # noqa: E402
-from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
+from randmedia.theory.sphere_caps import cap_grid, cos_thresholds
+from randmedia.generate.sphere_mc import MCSchedule, Potential, run_fluid
+from randmedia.generate.sphere_surface import points_dataset
+from randmedia.io import write_dataset
+from randmedia.seeding import sample_rng, sample_seed
 
-params = dict(snakemake.params.items())  # noqa: F821
-system = snakemake.wildcards.system  # noqa: F821
+params = dict(snakemake.params.items())
+system = snakemake.wildcards.system
 fluid, run = params["fluid"], params["run"]
 radius = float(fluid["R"])
 potential = Potential(fluid["potential"], float(fluid.get("coupling", 1.0)))
@@ -20,7 +20,7 @@ schedule = MCSchedule(target_acceptance=params["target_acceptance"],
                       initial_step=params["initial_step"], **run)
 a = cap_grid(radius, params["n_a"])
 seed = sample_seed(params["seed"], "sphere2019", system, 0)
-output = Path(snakemake.output[0])  # noqa: F821
+output = Path(snakemake.output[0])
 result = run_fluid(potential, radius, params["density"], params["temperature"], schedule,
                    sample_rng(seed), cos_thresholds(a, radius),
                    checkpoint=output.with_name(f".{output.stem}.checkpoint.npz"),
@@ -47,4 +47,4 @@ dataset.attrs.update({
     "step": result.step, **{k: v for k, v in run.items()},
     **{k: v for k, v in stats.items() if k not in ("tau_caps_sweeps", "schedule")},
 })
-write_dataset(dataset, output, rule=snakemake.rule, seed=seed, config=params)  # noqa: F821
+write_dataset(dataset, output, rule=snakemake.rule, seed=seed, config=params)

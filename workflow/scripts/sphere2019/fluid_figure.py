@@ -2,11 +2,11 @@
 Figs. 5, 7, 8 also for the second reading of Eq. (12b) (input alpha_cubed -> figNN_alpha_cubed)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-from randmedia.describe.sphere_points import CAP_VARIANCE  # noqa: E402
-from randmedia.io import read_dataset  # noqa: E402
-from randmedia.plot import sphere2019 as figures  # noqa: E402
+from randmedia.describe.sphere_points import CAP_VARIANCE
+from randmedia.io import read_dataset
+from randmedia.plot import sphere2019 as figures
 
 
 def descriptors(paths):
@@ -17,8 +17,8 @@ def descriptors(paths):
     return by_system
 
 
-inputs, outputs = snakemake.input, snakemake.output  # noqa: F821
-draw = getattr(figures, snakemake.params.figure)  # noqa: F821
-draw(descriptors(inputs.descriptors), outputs.pdf, a_min=snakemake.params.a_min)  # noqa: F821
+inputs, outputs = snakemake.input, snakemake.output
+draw = getattr(figures, snakemake.params.figure)
+draw(descriptors(inputs.descriptors), outputs.pdf, a_min=snakemake.params.a_min)
 if "alpha_cubed_pdf" in outputs.keys():
-    draw(descriptors(inputs.alpha_cubed), outputs.alpha_cubed_pdf, a_min=snakemake.params.a_min)  # noqa: F821
+    draw(descriptors(inputs.alpha_cubed), outputs.alpha_cubed_pdf, a_min=snakemake.params.a_min)

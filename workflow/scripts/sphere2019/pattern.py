@@ -1,16 +1,16 @@
 """Rule sphere2019_pattern: one point pattern on the sphere (Secs. III-IV, Appendix)."""
 from randmedia.jobs import start_job
 
-log = start_job(snakemake)  # noqa: F821
+log = start_job(snakemake)
 
-import math  # noqa: E402
+import math
 
-from randmedia.generate import sphere_surface as patterns  # noqa: E402
-from randmedia.io import write_dataset  # noqa: E402
-from randmedia.seeding import sample_rng, sample_seed  # noqa: E402
+from randmedia.generate import sphere_surface as patterns
+from randmedia.io import write_dataset
+from randmedia.seeding import sample_rng, sample_seed
 
-system = snakemake.wildcards.system  # noqa: F821
-p = dict(snakemake.params.patterns)  # noqa: F821
+system = snakemake.wildcards.system
+p = dict(snakemake.params.patterns)
 seed = None
 if system == "icosahedral":
     n = 40 * p["icosahedral_resolution"] * (p["icosahedral_resolution"] - 1) + 12
@@ -22,7 +22,7 @@ elif system == "fibonacci":
     frames = [patterns.fibonacci_grid(p["fibonacci_points"], radius)]
     attrs = {"pattern": "Swinbank-Purser Fibonacci grid"}
 else:
-    seed = sample_seed(snakemake.params.seed, "sphere2019", system, 0)  # noqa: F821
+    seed = sample_seed(snakemake.params.seed, "sphere2019", system, 0)
     rng = sample_rng(seed)
     radius = p["uncorrelated_R"]
     if system == "uniform":
@@ -38,5 +38,5 @@ attrs.update(kind="pattern", system=system,
              ensemble="grand_canonical" if system == "poisson" else "canonical")
 log.info("%s: %d frame(s), mean %.1f points, R = %.4g", system, len(frames),
          sum(len(f) for f in frames) / len(frames), radius)
-write_dataset(patterns.points_dataset(frames, radius, attrs), snakemake.output[0],  # noqa: F821
-              rule=snakemake.rule, seed=seed, config=p)  # noqa: F821
+write_dataset(patterns.points_dataset(frames, radius, attrs), snakemake.output[0],
+              rule=snakemake.rule, seed=seed, config=p)
