@@ -31,6 +31,22 @@ def test_normal_dipoles_reduce_to_r3_plus_coulomb_tail():
     assert np.all(general > 0)  # radial dipoles repel at every separation
 
 
+def test_second_reading_of_eq_12a_flips_one_factor_and_attracts_at_long_range():
+    """udd_flipped: the vector form of Eq. (12a) with -r in one s.r factor equals
+    alpha/r^3 - 5 alpha/(4 R^2 r), attractive beyond r = 2R/sqrt(5)."""
+    rng = np.random.default_rng(7)
+    radius, alpha = 3.0, 1.4
+    xi, xj = uniform_points(500, radius, rng), uniform_points(500, radius, rng)
+    si, sj = xi / radius, xj / radius
+    rv = xj - xi
+    r = np.linalg.norm(rv, axis=1)
+    flipped = alpha / r**3 * (np.einsum("ij,ij->i", si, sj)
+                              + 3.0 * np.einsum("ij,ij->i", si, rv) * np.einsum("ij,ij->i", sj, rv) / r**2)
+    reduced = Potential("udd_flipped", alpha, epsilon=0.0).pair_energy(r, radius)
+    np.testing.assert_allclose(reduced, flipped, rtol=1e-9)
+    assert np.all((reduced < 0) == (r > 2 * radius / np.sqrt(5)))
+
+
 def test_second_reading_of_eq_12b_cubes_the_coupling():
     """uddpar_cubed: epsilon (alpha d/r)^3 = alpha^3/r^3; alpha = 1 is the printed Eq. (12b)."""
     r = np.linspace(0.8, 4.0, 17)
@@ -40,7 +56,7 @@ def test_second_reading_of_eq_12b_cubes_the_coupling():
                                Potential("uddpar", 1.0).pair_energy(r, 5.0), rtol=1e-14)
 
 
-@pytest.mark.parametrize("name", ["lj", "udd", "uddpar", "uddpar_cubed", "udc", "ucc"])
+@pytest.mark.parametrize("name", ["lj", "udd", "udd_flipped", "uddpar", "uddpar_cubed", "udc", "ucc"])
 def test_kernel_energies_match_the_numpy_pair_sum(name):
     rng = np.random.default_rng(1)
     radius = 2.5

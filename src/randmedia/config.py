@@ -375,7 +375,7 @@ def _sphere2019_checks(section: dict, config: dict) -> list[str]:
     caps, fit, patterns, fluids = (section[k] for k in ("caps", "fit", "patterns", "fluids"))
     blocks = caps["n_blocks"]
     required = ("lj_R15", "udd_R15", "uddpar_a1_R15", "udc_R15", "ucc_R15", "uddpar_a1_R5",
-                "uddpar_a3_R5", "uddpar_a6_R5", "uddcubed_a3_R5", "uddcubed_a6_R5")
+                "uddpar_a3_R5", "uddpar_a6_R5", "uddcubed_a3_R5", "uddcubed_a6_R5", "udd_flipped_R15")
     missing = [name for name in required if name not in fluids["systems"]]
     if missing:
         problems.append(f"config key 'sphere2019.fluids.systems.{missing[0]}' is required (Table I "

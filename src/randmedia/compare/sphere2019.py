@@ -14,10 +14,11 @@ digit of the one-decimal published exponents (config ``rounding_margin``). The
 Poisson entry ("sigma^2 ~ s") is checked as the window mean of sigma^2/(<rho> s)
 against Eq. (7)'s exact 1, with tolerance = k_sigma * (jackknife error) and no margin.
 
-Second reading of Eq. (12b). For alpha = 3 and 6 at R = 5, Eq. (12b) as printed
-(U_LJ + alpha/r^3) is the Table I row; :data:`TABLE1_ALTERNATIVES` adds a second row
-per entry from the systems with the dipole term read as epsilon (alpha d_LJ/r)^3
-(coupling alpha^3, potential ``uddpar_cubed``), labelled in the ``reading`` column.
+Second readings. For alpha = 3 and 6 at R = 5, Eq. (12b) as printed (U_LJ + alpha/r^3)
+is the Table I row; :data:`TABLE1_ALTERNATIVES` adds a second row per entry from the
+systems with the dipole term read as epsilon (alpha d_LJ/r)^3 (coupling alpha^3,
+potential ``uddpar_cubed``), and for U_dd (R = 15) one from Eq. (12a) with one s.r
+factor of opposite sign (potential ``udd_flipped``), labelled in the ``reading`` column.
 """
 
 from __future__ import annotations
@@ -47,6 +48,7 @@ TABLE1_SYSTEMS = {
 #: Table I entries computed a second time under another reading of the paper (module
 #: docstring): (pattern, R, coupling) -> (our system, reading)
 TABLE1_ALTERNATIVES = {
+    ("udd_perpendicular_dipoles", 15, "alpha=1"): ("udd_flipped_R15", "one s.r factor of Eq. (12a) flipped: attractive tail"),
     ("udd_parallel_r3", 5, "alpha=3"): ("uddcubed_a3_R5", "eps (alpha d/r)^3 = alpha^3/r^3"),
     ("udd_parallel_r3", 5, "alpha=6"): ("uddcubed_a6_R5", "eps (alpha d/r)^3 = alpha^3/r^3"),
 }

@@ -11,6 +11,10 @@ length d_LJ, temperature T* = k_B T / epsilon. Pair potentials on the *chord*
   U_dd = U_LJ + alpha/r^3 + alpha/(4 R^2 r): purely repulsive, with a Coulomb tail
   of strength alpha/(4R^2) (:func:`dipole_pair_energy` is the general vector form;
   the test checks the identity).
+* ``udd_flipped``: Eq. (12a) with the sign of one s.r factor flipped (as if r_ij were
+  used in one and r_ji in the other): bracket 1 - 5 r^2/(4R^2), so
+  U_LJ + alpha/r^3 - 5 alpha/(4 R^2 r), whose tail is *attractive* -- the behaviour the
+  paper's text ascribes to U_dd. A second reading of Eq. (12a), run beside it.
 * ``uddpar``: U_LJ + alpha/r^3                                                    Eq. (12b)
 * ``uddpar_cubed``: U_LJ + epsilon (alpha d/r)^3 = U_LJ + alpha^3/r^3: a second reading
   of Eq. (12b) in which alpha scales the dipole *length* (coupling alpha^3; alpha = 1
@@ -66,13 +70,13 @@ from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, 
 from randmedia.generate import refuse_invalid
 from randmedia.theory.sphere_caps import check_density, check_radius
 
-POTENTIALS = ("lj", "udd", "uddpar", "uddpar_cubed", "udc", "ucc")
+POTENTIALS = ("lj", "udd", "udd_flipped", "uddpar", "uddpar_cubed", "udc", "ucc")
 
 
 @dataclass(frozen=True)
 class Potential:
     """A pair potential of Eqs. (11)-(12): ``name`` in :data:`POTENTIALS`, ``coupling``
-    alpha (udd, uddpar, uddpar_cubed), gamma (udc) or beta (ucc), LJ depth ``epsilon`` (0: no LJ)."""
+    alpha (udd, udd_flipped, uddpar, uddpar_cubed), gamma (udc) or beta (ucc), LJ depth ``epsilon`` (0: no LJ)."""
 
     name: str
     coupling: float = 1.0
@@ -94,6 +98,8 @@ class Potential:
         c1 = c2 = c3 = 0.0
         if self.name == "udd":
             c3, c1 = c, c / (4.0 * radius**2)
+        elif self.name == "udd_flipped":
+            c3, c1 = c, -5.0 * c / (4.0 * radius**2)
         elif self.name == "uddpar":
             c3 = c
         elif self.name == "uddpar_cubed":
