@@ -58,7 +58,7 @@ def overlapping_disks_s2_rows(
 def construction_numbers(s2_by_phi2: dict) -> "pd.DataFrame":
     """Our counterparts of the construction numbers quoted in Sec. IV, per phi2.
 
-    Delta S2 is reported two ways (see README): over the constructed range
+    Delta S2 is reported two ways (see docs/debye2020.md): over the constructed range
     0 < r <= l_c (the convergence criterion) and over every bin 0 < r < L/2,
     where S2 is not constrained and carries the finite-image sum rule
     sum_v chi_V(v) = 0 of a fixed volume fraction.
@@ -296,7 +296,7 @@ def construction_rows(reference, s2_by_phi2: dict, *, k_sigma: float) -> list[di
     """Delta S2 "quite small as 0.6 ~ 2 x 10^-4" (Sec. IV): a quality bound of the
     construction, so the smallest and largest per-phi2 mean Delta S2 are compared with the
     quoted ends as upper bounds (passed if ours <= published + k_sigma x the SEM of that
-    phi2's mean), for both ranges of bins (README: which bins the paper means is not said)."""
+    phi2's mean), for both ranges of bins (docs/debye2020.md: which bins the paper means is not said)."""
     quoted = _quoted(reference)
     rows = []
     for name, where in (("delta_S2_full", "bins 0 < r < L/2"), ("delta_S2", "bins 0 < r <= l_c")):

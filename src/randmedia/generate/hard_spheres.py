@@ -18,7 +18,7 @@ list (cells of side >= D, the 3^d cells around the trial position), kept up to d
 move by move, in numba kernels (``cache=True``). Event-chain Monte Carlo was not
 built: measured on this machine, the Metropolis chain makes the paper's 100
 decorrelated N = 10 000 liquid configurations in about 32 CPU minutes, well within
-the time budget (README; ``benchmarks/hard_spheres_mc.py``).
+the time budget (docs/hard_particles.md; ``benchmarks/hard_spheres_mc.py``).
 
 Chain. (1) Start: a lattice at the target density with random vacancies -- the first
 of square (2D) / simple cubic, bcc, fcc (3D) whose sites fit N particles without

@@ -19,7 +19,7 @@ length d_LJ, temperature T* = k_B T / epsilon. Pair potentials on the *chord*
 * ``uddpar_cubed``: U_LJ + epsilon (alpha d/r)^3 = U_LJ + alpha^3/r^3: a second reading
   of Eq. (12b) in which alpha scales the dipole *length* (coupling alpha^3; alpha = 1
   is unchanged). Eq. (12b) as printed cannot produce the paper's ordered alpha = 3, 6
-  states at T* = 5.2 (README, sphere2019); this reading is run beside it as separate
+  states at T* = 5.2 (docs/sphere2019.md); this reading is run beside it as separate
   systems and compared in a second Table I row.
 * ``udc``:    U_LJ + gamma/r^2                                                    Eq. (12c)
 * ``ucc``:    U_LJ + beta/r                                                       Eq. (12d)

@@ -10,7 +10,7 @@ d = 3
     (Carnahan & Starling, J. Chem. Phys. 51, 635 (1969)). Its virial coefficients
     B_n = n^2 + n - 2 (in units of v1^(n-1)) are within 2 % of the exact B4-B11; it
     lies 0.25 % below the converged virial series at phi = 0.3 and, at phi = 0.478,
-    0.08 +- 0.04 % below our N = 10 000 Monte Carlo (README).
+    0.08 +- 0.04 % below our N = 10 000 Monte Carlo (docs/hard_particles.md).
   * ``"kolafa"``: Z = (1 + phi + phi^2 - (2/3)(phi^3 + phi^4)) / (1 - phi)^3, J. Kolafa's
     equation as given by Boublik & Nezbeda, Collect. Czech. Chem. Commun. 51, 2301
     (1986). Its virial coefficients 18.33, 28.33, 40.0, 53.33, 68.33 reproduce the exact
@@ -24,7 +24,7 @@ d = 2
     (1975)); virial coefficients 3.125, 4.25, 5.375 against the exact 3.128, 4.258,
     5.337; within 0.03 % of the converged virial series for phi <= 0.3 (0.09 % at
     phi = 0.35); its higher coefficients are too large (B10: 11.0 against 10.2), so it
-    overestimates Z near freezing (measured against our Monte Carlo in the README). The
+    overestimates Z near freezing (measured against our Monte Carlo in docs/hard_particles.md). The
     default in d = 2.
   * ``"santos"``: Z = 1 / (1 - 2 phi + (2 phi_cp - 1) phi^2 / phi_cp^2), phi_cp = pi / (2 sqrt 3)
     (Santos, Lopez de Haro & Santos Yuste, J. Chem. Phys. 103, 4622 (1995)); built for
