@@ -18,12 +18,12 @@ import xarray as xr
 from randmedia.compare import compare
 from randmedia.describe.two_phase import RadialBinning
 from randmedia.stats import standard_error
-if TYPE_CHECKING:
-    import pandas as pd
-
 from randmedia.theory.overlapping import (chord_rate, lineal_path_void, pore_size_complementary_cdf,
                                           pore_size_moment, s2_void, specific_surface,
                                           surface_surface, surface_void)
+
+if TYPE_CHECKING:
+    import pandas as pd
 
 
 def overlapping_disks_s2_rows(
@@ -427,14 +427,12 @@ def surface_pore_numbers(fits: xr.Dataset) -> "pd.DataFrame":
             rows.append(_number(name, phi2, fits[name].values[i],
                                 fits[error].values[i] if error else np.nan, unit, where,
                                 n_samples=float(fits["n_samples"].values[i])))
-    covariance = fits["p1_coefficients_covariance"].values
-    for k, value in enumerate(fits["p1_coefficients"].values):
-        rows.append(_number(f"p1_coefficient_c{k + 1}", np.nan, value, np.sqrt(covariance[k, k]), "1",
-                            "a^2 p1 = c1 phi2 + c2 phi2^2 + c3 phi2^3 (paper: 1.05, -2.41, 4.16)"))
-    covariance = fits["p1_coefficients_pixel_centres_covariance"].values
-    for k, value in enumerate(fits["p1_coefficients_pixel_centres"].values):
-        rows.append(_number(f"p1_coefficient_c{k + 1}_pixel_centres", np.nan, value,
-                            np.sqrt(covariance[k, k]), "1", "the cubic of p1_pixel_centres"))
+    for suffix, where in (("", "a^2 p1 = c1 phi2 + c2 phi2^2 + c3 phi2^3 (paper: 1.05, -2.41, 4.16)"),
+                          ("_pixel_centres", "the cubic of p1_pixel_centres")):
+        covariance = fits[f"p1_coefficients{suffix}_covariance"].values
+        for k, value in enumerate(fits[f"p1_coefficients{suffix}"].values):
+            rows.append(_number(f"p1_coefficient_c{k + 1}{suffix}", np.nan, value,
+                                np.sqrt(covariance[k, k]), "1", where))
     rows.append(_number("p1_cubic_chi2_per_dof", np.nan, fits.attrs["p1_cubic_chi2_per_dof"], np.nan,
                         "1", "SEM-weighted cubic fit of p1(phi2)"))
     rows.append(_number("percolation_threshold_phi2", np.nan, fits.attrs["percolation_crossing"],

@@ -97,6 +97,11 @@ def pixel_centre_distances(image: np.ndarray) -> np.ndarray:
     return distance[image == 0]
 
 
+def _histogram_density(distances: np.ndarray, edges: np.ndarray) -> np.ndarray:
+    """Probability density of ``distances`` on the equal bins ``edges`` (bin averages of P)."""
+    return np.histogram(distances, bins=edges)[0] / (distances.size * (edges[1] - edges[0]))
+
+
 def pore_size_functions(images, rng: np.random.Generator, *, sigma: float, supersample: int,
                         delta_max: float, delta_bin: float, model: str = "pixels",
                         k_candidates: int = 4, log=None) -> xr.Dataset:
@@ -126,13 +131,13 @@ def pore_size_functions(images, rng: np.random.Generator, *, sigma: float, super
                                            k_candidates=k_candidates))
         count = distances.size
         F[k] = 1.0 - np.searchsorted(distances, edges, side="left") / count
-        P[k] = np.histogram(distances, bins=edges)[0] / (count * delta_bin)
+        P[k] = _histogram_density(distances, edges)
         mean_delta[k] = distances.mean()
         max_delta[k] = distances[-1]
         n_points[k] = count
         centre_distances = pixel_centre_distances(image)
         mean_pixel_centre[k] = centre_distances.mean()
-        P_pixel_centre[k] = np.histogram(centre_distances, bins=edges)[0] / (centre_distances.size * delta_bin)
+        P_pixel_centre[k] = _histogram_density(centre_distances, edges)
         progress.step()
     centres = 0.5 * (edges[1:] + edges[:-1])
     return xr.Dataset(

@@ -199,6 +199,11 @@ def wrapping_crossing(phi2, wraps_phase2, wraps_phase1, n_samples: int) -> tuple
     return float(crossing), float(np.hypot(d0 * sd0, d1 * sd1)), float(x1 - x0)
 
 
+def _relative_error(formula: float, simulated: float, sem: float) -> tuple[float, float]:
+    """(formula - simulated) / simulated and its standard error from the SEM of simulated."""
+    return (formula - simulated) / simulated, formula * sem / simulated**2
+
+
 def surface_pore_fits(systems: dict, *, a: float, fits: dict) -> "xr.Dataset":
     """Every Sec. V A-B number of the Debye media, per phi2, from the level-set descriptors.
 
@@ -273,16 +278,15 @@ def surface_pore_fits(systems: dict, *, a: float, fits: dict) -> "xr.Dataset":
                    eq27_normalization=eq27_normalization(p0, p1.mean(), p0),
                    mean_delta=mean_delta.mean(), mean_delta_sem=standard_error(mean_delta),
                    mean_delta_eq28=debye.debye_mean_pore_size(phi2, a))
-        row["eq28_rel_error"] = (row["mean_delta_eq28"] - row["mean_delta"]) / row["mean_delta"]
-        row["eq28_rel_error_sem"] = row["mean_delta_eq28"] * row["mean_delta_sem"] / row["mean_delta"] ** 2
+        row["eq28_rel_error"], row["eq28_rel_error_sem"] = _relative_error(
+            row["mean_delta_eq28"], row["mean_delta"], row["mean_delta_sem"])
         # second reading of "pore size" on pixels: void pixel centre to the nearest phase-2
         # pixel centre (the paper does not say how it sampled P(delta) from its images)
         centre = pores["mean_delta_pixel_centres_samples"].values
         row["mean_delta_pixel_centres"] = centre.mean()
         row["mean_delta_pixel_centres_sem"] = standard_error(centre)
-        row["eq28_rel_error_pixel_centres"] = (row["mean_delta_eq28"] - centre.mean()) / centre.mean()
-        row["eq28_rel_error_pixel_centres_sem"] = (row["mean_delta_eq28"] * standard_error(centre)
-                                                   / centre.mean() ** 2)
+        row["eq28_rel_error_pixel_centres"], row["eq28_rel_error_pixel_centres_sem"] = _relative_error(
+            row["mean_delta_eq28"], row["mean_delta_pixel_centres"], row["mean_delta_pixel_centres_sem"])
         p1_centres = np.array([pore_size_fit(centres, P, p0=p0, p2=p0, delta_max=delta_max)[0].value
                                for P in pores["P_pixel_centres_samples"].values])
         row["p1_pixel_centres"] = p1_centres.mean()

@@ -35,12 +35,17 @@ import numpy as np
 from randmedia.fit import FitResult
 
 
+def _inside(a: np.ndarray, a_min: float, a_max: float) -> np.ndarray:
+    """Grid points inside [a_min, a_max] (ends included up to round-off)."""
+    return (a >= a_min * (1 - 1e-12)) & (a <= a_max * (1 + 1e-12))
+
+
 def window_mask(a, a_min: float, a_max: float) -> np.ndarray:
     """Grid points inside [a_min, a_max]; at least 3 are required."""
     a = np.asarray(a, dtype=float)
     if not a_min < a_max:
         raise ValueError(f"fit window needs a_min < a_max, got [{a_min:g}, {a_max:g}]")
-    mask = (a >= a_min * (1 - 1e-12)) & (a <= a_max * (1 + 1e-12))
+    mask = _inside(a, a_min, a_max)
     if mask.sum() < 3:
         raise ValueError(f"fewer than 3 cap radii in the fit window [{a_min:g}, {a_max:g}]")
     return mask
@@ -107,11 +112,8 @@ def window_family_exponents(a, sigma2, *, rho: float, radius: float,
     deltas = []
     for low in a_min_rho_half:
         for high in a_max_over_R:
-            a_min, a_max = low / np.sqrt(rho), high * radius
-            if not a_min < a_max:
-                continue
-            mask = (a >= a_min * (1 - 1e-12)) & (a <= a_max * (1 + 1e-12))
-            if mask.sum() < 3:
+            mask = _inside(a, low / np.sqrt(rho), high * radius)
+            if mask.sum() < 3:  # (an empty or inverted window has no points)
                 continue
             slope = _log_log_slope(np.log(a[mask]), sigma2[mask])[0]
             if np.isfinite(slope):
