@@ -36,6 +36,8 @@ rule mrj2016_jammed_packing:
         bond_order_cutoff=MRJ_JAMMED["bond_order_cutoff"],
         checkpoint_seconds=MRJ_JAMMED["checkpoint_seconds"],
         seed=config["seed"],
+    benchmark:
+        "results/mrj2016/benchmarks/jammed_packing_{system}_sample{k}.tsv"
     log:
         "results/mrj2016/logs/jammed_{system}_sample{k}.log",
     threads: 1
@@ -51,12 +53,17 @@ rule mrj2016_jammed_packing:
 
 rule mrj2016_packings:
     """packings.csv: phi, mean contact number, rattler fraction, Q6, crystal-like fraction,
-    jamming test and cost of every packing, with mean and SEM per system."""
+    jamming test, certified gap tolerance and cost of every packing, with mean and SEM per
+    system."""
     input:
         samples=MRJ_SAMPLES + MRJ_LARGE_SAMPLES,
         code=script_sources("../scripts/mrj2016/jammed_packings.py"),
     output:
         MRJ_PACKINGS_TABLE,
+    params:
+        contacts=MRJ_JAMMED["contacts"],
+    benchmark:
+        "results/mrj2016/benchmarks/packings.tsv"
     log:
         "results/mrj2016/logs/packings.log",
     script:

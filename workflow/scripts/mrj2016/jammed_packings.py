@@ -1,15 +1,27 @@
-"""Rule mrj2016_packings: per-packing summary of the MRJ packings, mean and SEM per system."""
+"""Rule mrj2016_packings: per-packing summary of the MRJ packings, mean and SEM per system.
+
+Besides the attributes the packing rule stored, each row has ``certified_gap_tolerance``:
+the smallest contact gap tolerance (configured value x 10^m, up to 1e-4 D) at which the
+packing passes the strict-jamming test (randmedia.describe.jamming_resolution).
+"""
 from randmedia.jobs import start_job
 
 log = start_job(snakemake)
 
 from randmedia.describe.jamming import PACKING_ATTRS, summary_table
+from randmedia.describe.jamming_resolution import certified_gap_tolerance
 from randmedia.io import read_dataset, write_csv
 
+contacts = dict(snakemake.params.contacts)
 records = []
 for path in snakemake.input.samples:
-    dataset = read_dataset(path, attrs=PACKING_ATTRS)
-    records.append({"file": str(path), **{key: dataset.attrs[key] for key in PACKING_ATTRS}})
+    dataset = read_dataset(path, attrs=PACKING_ATTRS + ("diameter",))
+    certified = certified_gap_tolerance(dataset["position"].values, dataset["box"].values,
+                                        float(dataset.attrs["diameter"]), **contacts)
+    log.info("%s: jammed at gap tolerance %g: %d; certified from %g", path,
+             contacts["gap_tolerance"], dataset.attrs["jammed"], certified)
+    records.append({"file": str(path), **{key: dataset.attrs[key] for key in PACKING_ATTRS},
+                    "certified_gap_tolerance": certified})
 table = summary_table(records)
 for _, row in table[table["sample"].isin(["mean", "sem"])].iterrows():
     log.info("%s %s: phi %.5f, z %.4f, rattlers %.4f, Q6 %.4f", row["system"], row["sample"],
