@@ -2,6 +2,8 @@
 correlation functions and pore sizes -- exact geometric cases and overlapping disks
 (Ma & Torquato 2020, Eqs. 34-37)."""
 
+import logging
+
 import numpy as np
 import pytest
 
@@ -121,12 +123,17 @@ def test_pixels_model_keeps_the_volume_fraction_and_its_s_falls_with_sigma():
     assert specific_surface_of(level_set) * 40**2 == pytest.approx(40.0, rel=0.01)
 
 
-def test_tune_sigma_meets_the_target_or_says_it_cannot():
+def test_tune_sigma_meets_the_target_or_says_it_cannot(caplog):
+    log = logging.getLogger("tune_sigma_test")
+    caplog.set_level(logging.INFO, logger="tune_sigma_test")
     rng = np.random.default_rng(2)
     images = np.stack([overlapping_disks_image(rng, 101, 6.0, 0.3) for _ in range(2)])
     exact = ov.specific_surface(6.0, 0.3, 2)
-    sigma, achieved = tune_sigma(images, exact, supersample=4)
+    sigma, achieved = tune_sigma(images, exact, supersample=4, log=log)
     assert achieved == pytest.approx(exact, rel=1e-3) and 0.1 < sigma < 3.0
+    # progress: one line per evaluation, each with an ETA
+    lines = [record.getMessage() for record in caplog.records if "tuning sigma" in record.message]
+    assert len(lines) >= 3 and "ETA" in lines[-1]
     with pytest.raises(ValueError, match="cannot be filtered"):
         tune_sigma(images, 3 * exact, supersample=4)
 

@@ -25,7 +25,7 @@ s_target = model_specific_surface(**target)
 iface = params["interface"]
 n_tune = min(iface["n_tune"], images.shape[0])
 sigma, s_tuned = tune_sigma(images[:n_tune], s_target, supersample=iface["supersample"],
-                            model=iface["model"], bracket=tuple(iface["sigma_bracket"]))
+                            model=iface["model"], bracket=tuple(iface["sigma_bracket"]), log=log)
 log.info("%s: sigma = %.4f px gives s = %.6g (exact %.6g) on %d samples", params["system"], sigma,
          s_tuned, s_target, n_tune)
 common = dict(sigma=sigma, supersample=iface["supersample"], model=iface["model"])
