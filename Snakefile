@@ -15,6 +15,10 @@ from randmedia.config import validate_config
 configfile: "config/config.yaml"
 
 
+# `snakemake --report results/report.html`: this page, the figures and tables (workflow/rules/report.smk)
+report: "workflow/report/workflow.rst"
+
+
 validate_config(config, Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml")
 
 
@@ -30,6 +34,7 @@ include: "workflow/rules/mrj2016_equilibrium.smk"
 include: "workflow/rules/mrj2016_jammed.smk"
 include: "workflow/rules/mrj2016.smk"
 include: "workflow/rules/sphere2019.smk"
+include: "workflow/rules/report.smk"
 
 
 rule all:
@@ -38,6 +43,7 @@ rule all:
         DEBYE2020_TARGETS,
         MRJ2016_TARGETS,
         SPHERE2019_TARGETS,
+        REPORT_TARGETS,
 
 
 # every script rule lists its script's package modules as input `code` (common.smk)

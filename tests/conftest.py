@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import json
 import os
 import shutil
 import subprocess
@@ -57,3 +58,61 @@ def quick_run(tmp_path_factory) -> Path:
     result = run_snakemake(workdir, "--cores", "2", "--configfile", "config/quick.yaml")
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-5000:]
     return workdir
+
+
+PROBE = """
+import json, sys
+from pathlib import Path
+from snakemake.api import SnakemakeApi
+from snakemake.io import get_flag_value, is_flagged
+from snakemake.settings.types import ConfigSettings, OutputSettings, ResourceSettings
+
+workdir = Path(sys.argv[1])
+with SnakemakeApi(OutputSettings()) as api:
+    workflow = api.workflow(
+        resource_settings=ResourceSettings(cores=1), snakefile=workdir / "Snakefile", workdir=workdir,
+        config_settings=ConfigSettings(configfiles=[workdir / f for f in sys.argv[2:]]))._workflow
+    rules = {}
+    for rule in workflow.rules:
+        code = rule.input.get("code")
+        reported = []
+        for f in rule.output:
+            if is_flagged(f, "report"):
+                flag = get_flag_value(f, "report")
+                reported.append({"path": str(f), "category": flag.category, "subcategory": flag.subcategory,
+                                 "caption": flag.caption.get_path_or_uri(secret_free=True) if flag.caption else None})
+        rules[rule.name] = {
+            "script": str(Path(str(rule.basedir)) / rule.script) if rule.script else None,
+            "code": None if code is None or callable(code) else [str(f) for f in code],
+            "input": [str(f) for f in rule.input if isinstance(f, str)],
+            "output": [str(f) for f in rule.output],
+            "benchmark": None if rule.benchmark is None else str(rule.benchmark),
+            "report": reported,
+        }
+    report_text = workflow.report_text.get_path_or_uri(secret_free=True) if workflow.report_text else None
+    print("PROBE" + json.dumps({"global_constraints": dict(workflow.modifier.wildcard_constraints),
+                                "rules": rules, "report_text": report_text}))
+"""
+
+
+def probe_rules(workdir: Path, *configfiles: str) -> dict:
+    """Every rule of the workflow in ``workdir`` as Snakemake parsed it: script, input
+    ``code``, static inputs, output patterns (with their wildcard constraints), benchmark
+    pattern, outputs marked for the report (category, subcategory, caption file); the global
+    constraints and the report's description file."""
+    env = dict(os.environ)
+    env.pop("NUMBA_CACHE_DIR", None)
+    result = subprocess.run([sys.executable, "-c", PROBE, str(workdir), *configfiles], cwd=workdir,
+                            env=env, capture_output=True, text=True, timeout=300)
+    assert result.returncode == 0, result.stderr[-3000:]
+    line = next(line for line in result.stdout.splitlines() if line.startswith("PROBE"))
+    return json.loads(line.removeprefix("PROBE"))
+
+
+@pytest.fixture(scope="session")
+def parsed_workflow(tmp_path_factory) -> tuple[Path, dict]:
+    """(workflow copy, {"paper": probe, "quick": probe}): the rules parsed once per session for
+    the paper and the quick config (tests/test_reruns.py, tests/test_report.py)."""
+    workdir = copy_workflow(tmp_path_factory.mktemp("probe"))
+    return workdir, {name: probe_rules(workdir, *files)
+                     for name, files in (("paper", ()), ("quick", ("config/quick.yaml",)))}

@@ -11,17 +11,14 @@ config values it uses, and wildcard constraints sit on the rules that need them.
 
 from __future__ import annotations
 
-import json
 import modulefinder
 import os
 import re
-import subprocess
-import sys
 from pathlib import Path
 
 import pytest
 
-from conftest import REPO, copy_workflow, run_snakemake
+from conftest import REPO, copy_workflow, probe_rules, run_snakemake
 from randmedia.workflow_sources import SourceError, script_sources
 
 PACKAGE = REPO / "src" / "randmedia"
@@ -147,47 +144,10 @@ def test_closure_agrees_with_modulefinder(script):
 
 # --------------------------------------------------------------------------- the rules
 
-PROBE = """
-import json, sys
-from pathlib import Path
-from snakemake.api import SnakemakeApi
-from snakemake.settings.types import ConfigSettings, OutputSettings, ResourceSettings
-
-workdir = Path(sys.argv[1])
-with SnakemakeApi(OutputSettings()) as api:
-    workflow = api.workflow(
-        resource_settings=ResourceSettings(cores=1), snakefile=workdir / "Snakefile", workdir=workdir,
-        config_settings=ConfigSettings(configfiles=[workdir / f for f in sys.argv[2:]]))._workflow
-    rules = {}
-    for rule in workflow.rules:
-        code = rule.input.get("code")
-        rules[rule.name] = {
-            "script": str(Path(str(rule.basedir)) / rule.script) if rule.script else None,
-            "code": None if code is None or callable(code) else [str(f) for f in code],
-            "output": [str(f) for f in rule.output],
-        }
-    print("PROBE" + json.dumps({"global_constraints": dict(workflow.modifier.wildcard_constraints),
-                                "rules": rules}))
-"""
-
-
-def probe_rules(workdir: Path, *configfiles: str) -> dict:
-    """Every rule of the workflow in ``workdir`` as Snakemake parsed it: script, input
-    ``code``, output patterns (with their wildcard constraints); the global constraints."""
-    env = dict(os.environ)
-    env.pop("NUMBA_CACHE_DIR", None)
-    result = subprocess.run([sys.executable, "-c", PROBE, str(workdir), *configfiles], cwd=workdir,
-                            env=env, capture_output=True, text=True, timeout=300)
-    assert result.returncode == 0, result.stderr[-3000:]
-    line = next(line for line in result.stdout.splitlines() if line.startswith("PROBE"))
-    return json.loads(line.removeprefix("PROBE"))
-
-
 @pytest.fixture(scope="module")
-def parsed(tmp_path_factory):
-    workdir = copy_workflow(tmp_path_factory.mktemp("probe"))
-    return workdir, {name: probe_rules(workdir, *files)
-                     for name, files in (("paper", ()), ("quick", ("config/quick.yaml",)))}
+def parsed(parsed_workflow):
+    """(workflow copy, {"paper": probe, "quick": probe}) of every rule (conftest.probe_rules)."""
+    return parsed_workflow
 
 
 @pytest.mark.workflow

@@ -1,5 +1,6 @@
 # Shared helpers and environment of every rule.
 import os
+import re
 from pathlib import Path
 
 from randmedia.workflow_sources import SourceError, script_sources as _script_sources
@@ -52,6 +53,53 @@ def check_script_rules():
 
 
 
+# --------------------------------------------------------------------------- HTML report
+# (snakemake --report results/report.html; captions in workflow/report/, categories by paper)
+
+
+def report_figure(path, paper, number, caption=None):
+    """``path`` (a PNG of figure ``number`` of ``paper``) marked for the HTML report: category
+    ``paper``, subcategory "Fig. NN" (zero-padded: the report sorts subcategories as text),
+    caption workflow/report/{paper}/{caption or figNN.rst}."""
+    caption = caption or f"fig{number:02d}.rst"
+    return report(path, caption=f"../report/{paper}/{caption}", category=paper,
+                  subcategory=f"Fig. {number:02d}")
+
+
+def report_validation_figure(path, paper, caption):
+    """A validation figure (beyond the paper's figures) in the report: subcategory Validation."""
+    return report(path, caption=f"../report/{paper}/{caption}", category=paper,
+                  subcategory="Validation")
+
+
+_ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V"}
+
+
+def report_table(path, paper):
+    """(page name, caption file under workflow/report/, subcategory) of the report page of the
+    CSV ``path`` of ``paper`` (rules {paper}_report_tables, report.smk)."""
+    name = Path(path).stem
+    folder = Path(path).parent.name
+    table = re.fullmatch(r"table(\d)", name)
+    if name in ("comparison", "comparison_notes") and folder == paper:
+        return name, f"{name}.rst", "Comparison"
+    if table and folder == "tables":
+        return name, f"{paper}/{name}.rst", f"Table {_ROMAN[int(table.group(1))]}"
+    if folder == "validation":
+        return name, f"{paper}/validation_{name}.rst", "Validation"
+    caption = f"{paper}/{name}.rst"
+    if not (Path(workflow.basedir) / "workflow" / "report" / caption).is_file():
+        caption = "table.rst"  # a table without a caption of its own (tests/test_report.py lists them)
+    return name, caption, "Tables"
+
+
+def report_benchmark_patterns(paper):
+    """{rule: benchmark pattern} of every rule defined so far whose benchmark files lie in
+    results/{paper}/benchmarks/."""
+    return {rule.name: str(rule.benchmark) for rule in workflow.rules
+            if rule.benchmark is not None and str(rule.benchmark).startswith(f"results/{paper}/benchmarks/")}
+
+
 # --------------------------------------------------------------------------- debye2020 helpers
 # (called by the rules of workflow/rules/debye2020.smk; they read that file's constants)
 
@@ -66,9 +114,12 @@ def comparison_models():
     return [DISKS_SYSTEM, HARD_DISKS_SYSTEM]
 
 
-def figure_outputs(number):
+def figure_outputs(number, in_report=False):
+    """figNN.pdf and figNN.png of debye2020; with ``in_report`` (rule outputs) the PNG is
+    marked for the HTML report (report_figure)."""
+    png = f"results/debye2020/figures/fig{number:02d}.png"
     return {"pdf": f"results/debye2020/figures/fig{number:02d}.pdf",
-            "png": f"results/debye2020/figures/fig{number:02d}.png"}
+            "png": report_figure(png, "debye2020", number) if in_report else png}
 
 
 def section6_inputs(number):
@@ -161,13 +212,19 @@ def m_describe_inputs(wildcards):
 # (called by the rules of workflow/rules/sphere2019.smk; they read that file's constants)
 
 
-def sphere_figure(number, second_reading=False):
+def sphere_figure(number, second_reading=False, in_report=False):
     """Output files of the rule of paper figure ``number``; with ``second_reading`` also
-    figNN_alpha_cubed (the same figure for the second reading of Eq. 12b)."""
+    figNN_alpha_cubed (the same figure for the second reading of Eq. 12b); with ``in_report``
+    (rule outputs) the PNGs are marked for the HTML report (report_figure)."""
     files = {ext: f"results/sphere2019/figures/fig{number:02d}.{ext}" for ext in ("pdf", "png")}
     if second_reading:
         files.update({f"alpha_cubed_{ext}": f"results/sphere2019/figures/fig{number:02d}_alpha_cubed.{ext}"
                       for ext in ("pdf", "png")})
+    if in_report:  # the PNGs marked for the HTML report
+        files["png"] = report_figure(files["png"], "sphere2019", number)
+        if second_reading:
+            files["alpha_cubed_png"] = report_figure(files["alpha_cubed_png"], "sphere2019", number,
+                                                     caption="alpha_cubed.rst")
     return files
 
 

@@ -38,6 +38,8 @@ rule debye2020_media_sample:
         lc=MEDIA["lc"],
         schedule=MEDIA["schedule"],
         seed=config["seed"],
+    benchmark:
+        "results/debye2020/benchmarks/media_sample_phi{phi2}_sample{k}.tsv"
     log:
         "results/debye2020/logs/media_phi{phi2}_sample{k}.log",
     threads: 1
@@ -61,6 +63,8 @@ rule debye2020_media_s2:
         L=MEDIA["L"],
         a=MEDIA["a"],
         lc=MEDIA["lc"],
+    benchmark:
+        "results/debye2020/benchmarks/media_s2_phi{phi2}.tsv"
     log:
         "results/debye2020/logs/media_s2_phi{phi2}.log",
     script:
@@ -73,10 +77,11 @@ rule debye2020_fig01:
         samples=expand(MEDIA_SAMPLE, phi2=MEDIA_PHI2, k=0),
         code=script_sources("../scripts/debye2020/fig01.py"),
     output:
-        pdf="results/debye2020/figures/fig01.pdf",
-        png="results/debye2020/figures/fig01.png",
+        **figure_outputs(1, in_report=True),
     params:
         a=MEDIA["a"],
+    benchmark:
+        "results/debye2020/benchmarks/fig01.tsv"
     log:
         "results/debye2020/logs/fig01.log",
     script:
@@ -89,10 +94,11 @@ rule debye2020_fig02:
         s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
         code=script_sources("../scripts/debye2020/fig02.py"),
     output:
-        pdf="results/debye2020/figures/fig02.pdf",
-        png="results/debye2020/figures/fig02.png",
+        **figure_outputs(2, in_report=True),
     params:
         lc=MEDIA["lc"],
+    benchmark:
+        "results/debye2020/benchmarks/fig02.tsv"
     log:
         "results/debye2020/logs/fig02.log",
     script:
@@ -114,6 +120,8 @@ rule debye2020_media_chords:
         length=MEDIA["a"],
         chords=CHORDS,
         seed=config["seed"],
+    benchmark:
+        "results/debye2020/benchmarks/media_chords_phi{phi2}.tsv"
     log:
         "results/debye2020/logs/media_chords_phi{phi2}.log",
     script:
@@ -129,6 +137,8 @@ rule debye2020_fit_lineal_path:
         LINEAL_FITS,
     params:
         a=MEDIA["a"],
+    benchmark:
+        "results/debye2020/benchmarks/fit_lineal_path.tsv"
     log:
         "results/debye2020/logs/fit_lineal_path.log",
     script:
@@ -142,11 +152,12 @@ rule debye2020_fig06:
         fits=LINEAL_FITS,
         code=script_sources("../scripts/debye2020/fig06_07.py"),
     output:
-        pdf="results/debye2020/figures/fig06.pdf",
-        png="results/debye2020/figures/fig06.png",
+        **figure_outputs(6, in_report=True),
     params:
         a=MEDIA["a"],
         figure="fig06_lineal_path",
+    benchmark:
+        "results/debye2020/benchmarks/fig06.tsv"
     log:
         "results/debye2020/logs/fig06.log",
     script:
@@ -160,11 +171,12 @@ rule debye2020_fig07:
         fits=LINEAL_FITS,
         code=script_sources("../scripts/debye2020/fig06_07.py"),
     output:
-        pdf="results/debye2020/figures/fig07.pdf",
-        png="results/debye2020/figures/fig07.png",
+        **figure_outputs(7, in_report=True),
     params:
         a=MEDIA["a"],
         figure="fig07_chord_density",
+    benchmark:
+        "results/debye2020/benchmarks/fig07.tsv"
     log:
         "results/debye2020/logs/fig07.log",
     script:
@@ -189,6 +201,8 @@ rule debye2020_overlapping_disks_image:
         radius=DISKS["radius"],
         phi2=DISKS["phi2"],
         seed=config["seed"],
+    benchmark:
+        "results/debye2020/benchmarks/overlapping_disks_image_sample{k}.tsv"
     log:
         f"results/debye2020/logs/overlapping_disks_image_{{k}}.log",
     threads: 1
@@ -206,6 +220,8 @@ rule debye2020_overlapping_disks_s2:
     params:
         r_max=DISKS["s2_r_max_over_R"] * DISKS["radius"],
         L=DISKS["L"],
+    benchmark:
+        "results/debye2020/benchmarks/overlapping_disks_s2.tsv"
     log:
         "results/debye2020/logs/overlapping_disks_s2.log",
     threads: 1
@@ -220,11 +236,14 @@ rule debye2020_overlapping_disks_figure:
         code=script_sources("../scripts/debye2020/overlapping_disks_figure.py"),
     output:
         pdf=DISKS_FIGURE,
-        png=DISKS_FIGURE.replace(".pdf", ".png"),
+        png=report_validation_figure(DISKS_FIGURE.replace(".pdf", ".png"), "debye2020",
+                                     "validation_overlapping_disks_s2.rst"),
     params:
         radius=DISKS["radius"],
         phi2=DISKS["phi2"],
         compare_r_max=DISKS["compare_r_max_over_R"] * DISKS["radius"],
+    benchmark:
+        "results/debye2020/benchmarks/overlapping_disks_figure.tsv"
     log:
         "results/debye2020/logs/overlapping_disks_figure.log",
     script:
@@ -244,6 +263,8 @@ rule debye2020_overlapping_disks_chords:
         length=DISKS["radius"],
         chords=CHORDS,
         seed=config["seed"],
+    benchmark:
+        "results/debye2020/benchmarks/overlapping_disks_chords.tsv"
     log:
         "results/debye2020/logs/overlapping_disks_chords.log",
     script:
@@ -296,6 +317,8 @@ rule debye2020_level_set:
         target=lambda wildcards: LEVEL_SET_SYSTEMS[wildcards.system]["target"],
         interface=INTERFACE,
         seed=config["seed"],
+    benchmark:
+        "results/debye2020/benchmarks/level_set_{system}.tsv"
     log:
         "results/debye2020/logs/level_set_{system}.log",
     threads: 1
@@ -317,6 +340,8 @@ rule debye2020_fit_surface_pores:
     params:
         a=MEDIA["a"],
         fits=FITS,
+    benchmark:
+        "results/debye2020/benchmarks/fit_surface_pores.tsv"
     log:
         "results/debye2020/logs/fit_surface_pores.log",
     script:
@@ -334,6 +359,8 @@ rule debye2020_numbers:
         code=script_sources("../scripts/debye2020/numbers.py"),
     output:
         "results/debye2020/tables/numbers.csv",
+    benchmark:
+        "results/debye2020/benchmarks/numbers.tsv"
     log:
         "results/debye2020/logs/numbers.log",
     script:
@@ -380,10 +407,12 @@ rule debye2020_fig03:
         surface=[files["surface"] for files in MEDIA_LEVEL_SET],
         code=script_sources("../scripts/debye2020/fig03_04.py"),
     output:
-        **figure_outputs(3),
+        **figure_outputs(3, in_report=True),
     params:
         a=MEDIA["a"],
         figure="fig03_surface_void",
+    benchmark:
+        "results/debye2020/benchmarks/fig03.tsv"
     log:
         "results/debye2020/logs/fig03.log",
     script:
@@ -396,10 +425,12 @@ rule debye2020_fig04:
         surface=[files["surface"] for files in MEDIA_LEVEL_SET],
         code=script_sources("../scripts/debye2020/fig03_04.py"),
     output:
-        **figure_outputs(4),
+        **figure_outputs(4, in_report=True),
     params:
         a=MEDIA["a"],
         figure="fig04_surface_surface",
+    benchmark:
+        "results/debye2020/benchmarks/fig04.tsv"
     log:
         "results/debye2020/logs/fig04.log",
     script:
@@ -413,9 +444,11 @@ rule debye2020_fig05:
         fits=SURFACE_PORE_FITS,
         code=script_sources("../scripts/debye2020/fig05.py"),
     output:
-        **figure_outputs(5),
+        **figure_outputs(5, in_report=True),
     params:
         a=MEDIA["a"],
+    benchmark:
+        "results/debye2020/benchmarks/fig05.tsv"
     log:
         "results/debye2020/logs/fig05.log",
     script:
@@ -428,9 +461,11 @@ rule debye2020_fig08:
         samples=[f"{DISKS_DIR}/sample0.nc", HARD_DISKS_SAMPLES[0]],
         code=script_sources("../scripts/debye2020/fig08.py"),
     output:
-        **figure_outputs(8),
+        **figure_outputs(8, in_report=True),
     params:
         titles=["overlapping disks", "equilibrium hard disks"],
+    benchmark:
+        "results/debye2020/benchmarks/fig08.tsv"
     log:
         "results/debye2020/logs/fig08.log",
     script:
@@ -446,10 +481,12 @@ rule debye2020_fig09:
         **section6_inputs(9),
         code=script_sources("../scripts/debye2020/section6.py"),
     output:
-        **figure_outputs(9),
+        **figure_outputs(9, in_report=True),
     params:
         number=9,
         **SECTION6_PARAMS,
+    benchmark:
+        "results/debye2020/benchmarks/fig09.tsv"
     log:
         "results/debye2020/logs/fig09.log",
     script:
@@ -462,10 +499,12 @@ rule debye2020_fig10:
         **section6_inputs(10),
         code=script_sources("../scripts/debye2020/section6.py"),
     output:
-        **figure_outputs(10),
+        **figure_outputs(10, in_report=True),
     params:
         number=10,
         **SECTION6_PARAMS,
+    benchmark:
+        "results/debye2020/benchmarks/fig10.tsv"
     log:
         "results/debye2020/logs/fig10.log",
     script:
@@ -478,10 +517,12 @@ rule debye2020_fig11:
         **section6_inputs(11),
         code=script_sources("../scripts/debye2020/section6.py"),
     output:
-        **figure_outputs(11),
+        **figure_outputs(11, in_report=True),
     params:
         number=11,
         **SECTION6_PARAMS,
+    benchmark:
+        "results/debye2020/benchmarks/fig11.tsv"
     log:
         "results/debye2020/logs/fig11.log",
     script:
@@ -494,10 +535,12 @@ rule debye2020_fig12:
         **section6_inputs(12),
         code=script_sources("../scripts/debye2020/section6.py"),
     output:
-        **figure_outputs(12),
+        **figure_outputs(12, in_report=True),
     params:
         number=12,
         **SECTION6_PARAMS,
+    benchmark:
+        "results/debye2020/benchmarks/fig12.tsv"
     log:
         "results/debye2020/logs/fig12.log",
     script:
@@ -511,10 +554,13 @@ rule debye2020_overlapping_disks_level_set_figure:
         code=script_sources("../scripts/debye2020/validation_level_set.py"),
     output:
         pdf=LEVEL_SET_FIGURE,
-        png=LEVEL_SET_FIGURE.replace(".pdf", ".png"),
+        png=report_validation_figure(LEVEL_SET_FIGURE.replace(".pdf", ".png"), "debye2020",
+                                     "validation_overlapping_disks_level_set.rst"),
     params:
         radius=DISKS["radius"],
         phi2=DISKS["phi2"],
+    benchmark:
+        "results/debye2020/benchmarks/overlapping_disks_level_set_figure.tsv"
     log:
         "results/debye2020/logs/overlapping_disks_level_set_figure.log",
     script:

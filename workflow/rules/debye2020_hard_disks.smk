@@ -44,6 +44,8 @@ for _chain in range(HARD_DISKS["n_chains"]):
             mc=HARD_DISKS["mc"],
             checkpoint_seconds=HARD_DISKS["checkpoint_seconds"],
             seed=config["seed"],
+        benchmark:
+            f"results/debye2020/benchmarks/hard_disks_chain{_chain}.tsv"
         log:
             f"results/debye2020/logs/hard_disks_chain{_chain}.log",
         threads: 1
@@ -61,7 +63,7 @@ rule debye2020_hard_disks_validation:
         code=script_sources("../scripts/debye2020/hard_disks_validation.py"),
     output:
         pdf=HARD_DISKS_TARGETS[0],
-        png=HARD_DISKS_TARGETS[1],
+        png=report_validation_figure(HARD_DISKS_TARGETS[1], "debye2020", "validation_hard_disks_eos.rst"),
         diagnostics=HARD_DISKS_TARGETS[2],
         comparison=HARD_DISKS_TARGETS[3],
     params:
@@ -69,6 +71,8 @@ rule debye2020_hard_disks_validation:
         radius=HARD_DISKS["radius"],
         mc=HARD_DISKS["mc"],
         k_sigma=config["comparison"]["k_sigma"],
+    benchmark:
+        "results/debye2020/benchmarks/hard_disks_validation.tsv"
     log:
         "results/debye2020/logs/hard_disks_validation.log",
     script:

@@ -78,6 +78,8 @@ rule mrj2016_overlapping_samples:
         phi=M_OVERLAPPING["phi"],
         n_mean=M_OVERLAPPING["n_mean"],
         seed=config["seed"],
+    benchmark:
+        "results/mrj2016/benchmarks/overlapping_samples.tsv"
     log:
         "results/mrj2016/logs/overlapping_samples.log",
     threads: 1
@@ -96,6 +98,8 @@ rule mrj2016_lattice_samples:
     params:
         n_cells=lambda wildcards: M_LATTICES[f"{wildcards.lattice}_cells"],
         seed=config["seed"],
+    benchmark:
+        "results/mrj2016/benchmarks/lattice_samples_{lattice}.tsv"
     log:
         "results/mrj2016/logs/{lattice}_samples.log",
     threads: 1
@@ -120,6 +124,8 @@ rule mrj2016_describe_chunk:
     params:
         first=lambda wildcards: int(wildcards.c) * M_CHUNK,
         settings=lambda wildcards: m_describe_settings(wildcards.kind, wildcards.system),
+    benchmark:
+        "results/mrj2016/benchmarks/describe_chunk_{system}_{kind}_chunk{c}.tsv"
     log:
         "results/mrj2016/logs/{system}_{kind}_chunk{c}.log",
     threads: 1
@@ -142,6 +148,8 @@ rule mrj2016_describe:
         kind=M_KIND_CONSTRAINT,
     params:
         settings=lambda wildcards: m_describe_settings(wildcards.kind, wildcards.system, merge=True),
+    benchmark:
+        "results/mrj2016/benchmarks/describe_{system}_{kind}.tsv"
     log:
         "results/mrj2016/logs/{system}_{kind}.log",
     threads: 1
@@ -198,9 +206,13 @@ rule mrj2016_figure:
         code=script_sources("../scripts/mrj2016/figure.py"),
     output:
         pdf="results/mrj2016/figures/fig{nn}.pdf",
-        png="results/mrj2016/figures/fig{nn}.png",
+        # one caption for the 13 figures (a Jinja template branching on the wildcard nn)
+        png=report("results/mrj2016/figures/fig{nn}.png", caption="../report/mrj2016/figures.rst",
+                   category="mrj2016", subcategory="Fig. {nn}"),
     params:
         settings=lambda wildcards: M_FIGURE_PARAMS[int(wildcards.nn)],
+    benchmark:
+        "results/mrj2016/benchmarks/fig{nn}.tsv"
     log:
         "results/mrj2016/logs/fig{nn}.log",
     wildcard_constraints:
@@ -231,6 +243,8 @@ rule mrj2016_table:
         "results/mrj2016/tables/table{n}.csv",
     params:
         overlapping_phi=M_OVERLAPPING["phi"],
+    benchmark:
+        "results/mrj2016/benchmarks/table{n}.tsv"
     log:
         "results/mrj2016/logs/table{n}.log",
     wildcard_constraints:
@@ -256,6 +270,8 @@ rule mrj2016_comparison:
         spectral=M_SPECTRAL,
         windows=M_WINDOWS,
         n_samples={system: len(samples) for system, samples in M_SAMPLES.items()},
+    benchmark:
+        "results/mrj2016/benchmarks/comparison.tsv"
     log:
         "results/mrj2016/logs/comparison.log",
     script:

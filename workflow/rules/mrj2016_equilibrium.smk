@@ -43,6 +43,8 @@ for _chain in range(MRJ2016_EQUILIBRIUM["n_chains"]):
             mc=MRJ2016_EQUILIBRIUM["mc"],
             checkpoint_seconds=MRJ2016_EQUILIBRIUM["checkpoint_seconds"],
             seed=config["seed"],
+        benchmark:
+            f"results/mrj2016/benchmarks/equilibrium_chain{_chain}.tsv"
         log:
             f"results/mrj2016/logs/equilibrium_chain{_chain}.log",
         threads: 1
@@ -60,7 +62,7 @@ rule mrj2016_equilibrium_validation:
         code=script_sources("../scripts/mrj2016/equilibrium_validation.py"),
     output:
         pdf=EQUILIBRIUM_TARGETS[0],
-        png=EQUILIBRIUM_TARGETS[1],
+        png=report_validation_figure(EQUILIBRIUM_TARGETS[1], "mrj2016", "validation_equilibrium_eos.rst"),
         diagnostics=EQUILIBRIUM_TARGETS[2],
         comparison=EQUILIBRIUM_TARGETS[3],
     params:
@@ -68,6 +70,8 @@ rule mrj2016_equilibrium_validation:
         eos=MRJ2016_EQUILIBRIUM["eos"],
         mc=MRJ2016_EQUILIBRIUM["mc"],
         k_sigma=config["comparison"]["k_sigma"],
+    benchmark:
+        "results/mrj2016/benchmarks/equilibrium_validation.tsv"
     log:
         "results/mrj2016/logs/equilibrium_validation.log",
     script:

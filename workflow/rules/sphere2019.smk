@@ -54,6 +54,8 @@ rule sphere2019_pattern:
         patterns=lambda wildcards: {key: SPHERE_PATTERNS[key]
                                     for key in SPHERE_PATTERN_KEYS[wildcards.system]},
         seed=lambda wildcards: None if wildcards.system in ("icosahedral", "fibonacci") else config["seed"],
+    benchmark:
+        "results/sphere2019/benchmarks/pattern_{system}.tsv"
     log:
         "results/sphere2019/logs/config_{system}.log",
     threads: 1
@@ -80,6 +82,8 @@ rule sphere2019_fluid:
         checkpoint_seconds=SPHERE_FLUIDS["checkpoint_seconds"],
         n_a=SPHERE_CAPS["n_a"],
         seed=config["seed"],
+    benchmark:
+        "results/sphere2019/benchmarks/fluid_{system}.tsv"
     log:
         "results/sphere2019/logs/config_{system}.log",
     threads: 1
@@ -101,6 +105,8 @@ rule sphere2019_describe:
     params:
         caps=SPHERE_CAPS,
         seed=config["seed"],
+    benchmark:
+        "results/sphere2019/benchmarks/describe_{system}.tsv"
     log:
         "results/sphere2019/logs/describe_{system}.log",
     threads: 2
@@ -117,6 +123,8 @@ rule sphere2019_fit:
         SPHERE_FITS,
     params:
         fit=SPHERE["fit"],
+    benchmark:
+        "results/sphere2019/benchmarks/fit.tsv"
     log:
         "results/sphere2019/logs/fit.log",
     script:
@@ -133,6 +141,8 @@ rule sphere2019_table1:
     output:
         table="results/sphere2019/tables/table1.csv",
         runs="results/sphere2019/tables/mc_runs.csv",
+    benchmark:
+        "results/sphere2019/benchmarks/table1.tsv"
     log:
         "results/sphere2019/logs/table1.log",
     script:
@@ -160,7 +170,9 @@ rule sphere2019_fig01:
     input:
         code=script_sources("../scripts/sphere2019/fig01.py"),
     output:
-        **sphere_figure(1),
+        **sphere_figure(1, in_report=True),
+    benchmark:
+        "results/sphere2019/benchmarks/fig01.tsv"
     log:
         "results/sphere2019/logs/fig01.log",
     script:
@@ -174,7 +186,9 @@ rule sphere2019_fig02:
         descriptors=sphere_descriptors(["icosahedral", "fibonacci"]),
         code=script_sources("../scripts/sphere2019/fig02.py"),
     output:
-        **sphere_figure(2),
+        **sphere_figure(2, in_report=True),
+    benchmark:
+        "results/sphere2019/benchmarks/fig02.tsv"
     log:
         "results/sphere2019/logs/fig02.log",
     script:
@@ -188,7 +202,9 @@ rule sphere2019_fig03:
         descriptors=sphere_descriptors(["poisson", "uniform"]),
         code=script_sources("../scripts/sphere2019/fig03.py"),
     output:
-        **sphere_figure(3),
+        **sphere_figure(3, in_report=True),
+    benchmark:
+        "results/sphere2019/benchmarks/fig03.tsv"
     log:
         "results/sphere2019/logs/fig03.log",
     script:
@@ -201,10 +217,12 @@ rule sphere2019_fig04:
         descriptors=sphere_descriptors(SPHERE_R15),
         code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
-        **sphere_figure(4),
+        **sphere_figure(4, in_report=True),
     params:
         figure="fig04_fluids",
         a_min=SPHERE_A_MIN_PLOT,
+    benchmark:
+        "results/sphere2019/benchmarks/fig04.tsv"
     log:
         "results/sphere2019/logs/fig04.log",
     script:
@@ -218,10 +236,12 @@ rule sphere2019_fig05:
         alpha_cubed=sphere_descriptors(SPHERE_ALPHA_CUBED),
         code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
-        **sphere_figure(5, second_reading=True),
+        **sphere_figure(5, second_reading=True, in_report=True),
     params:
         figure="fig05_alpha",
         a_min=SPHERE_A_MIN_PLOT,
+    benchmark:
+        "results/sphere2019/benchmarks/fig05.tsv"
     log:
         "results/sphere2019/logs/fig05.log",
     script:
@@ -235,7 +255,9 @@ rule sphere2019_fig06:
         alpha_cubed=expand(SPHERE_CONFIG, system=SPHERE_ALPHA_CUBED),
         code=script_sources("../scripts/sphere2019/fig06.py"),
     output:
-        **sphere_figure(6, second_reading=True),
+        **sphere_figure(6, second_reading=True, in_report=True),
+    benchmark:
+        "results/sphere2019/benchmarks/fig06.tsv"
     log:
         "results/sphere2019/logs/fig06.log",
     script:
@@ -249,10 +271,12 @@ rule sphere2019_fig07:
         alpha_cubed=sphere_descriptors(SPHERE_FIG08_CUBED),
         code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
-        **sphere_figure(7, second_reading=True),
+        **sphere_figure(7, second_reading=True, in_report=True),
     params:
         figure="fig07_g2",
         a_min=0.0,
+    benchmark:
+        "results/sphere2019/benchmarks/fig07.tsv"
     log:
         "results/sphere2019/logs/fig07.log",
     script:
@@ -266,10 +290,12 @@ rule sphere2019_fig08:
         alpha_cubed=sphere_descriptors(SPHERE_FIG08_CUBED),
         code=script_sources("../scripts/sphere2019/fluid_figure.py"),
     output:
-        **sphere_figure(8, second_reading=True),
+        **sphere_figure(8, second_reading=True, in_report=True),
     params:
         figure="fig08_from_g2",
         a_min=0.0,
+    benchmark:
+        "results/sphere2019/benchmarks/fig08.tsv"
     log:
         "results/sphere2019/logs/fig08.log",
     script:
