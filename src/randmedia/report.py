@@ -38,7 +38,7 @@ table { border-collapse: collapse; margin: .4em 0; }
 th, td { border: 1px solid #bbb; padding: 2px 6px; text-align: left; vertical-align: top; }
 th { background: #eee; position: sticky; top: 0; }
 td.num { text-align: right; font-variant-numeric: tabular-nums; white-space: nowrap; }
-td.text { min-width: 8em; max-width: 50em; }
+td.text { min-width: 24em; max-width: 50em; }  /* reasons wrap in a few lines, not many */
 tr.failed td { background: #fbdada; }
 .summary { font-weight: 600; }
 """
@@ -70,16 +70,17 @@ def _failed_mask(frame: pd.DataFrame) -> pd.Series:
     return ~passed
 
 
-def html_table(frame: pd.DataFrame) -> str:
-    """``frame`` as an HTML table; rows with ``passed`` false get the class ``failed``."""
+def html_table(frame: pd.DataFrame, wide: tuple[str, ...] = ("reason",)) -> str:
+    """``frame`` as an HTML table; rows with ``passed`` false get the class ``failed``, cells of
+    the ``wide`` columns (long text) the class ``text``."""
     failed = _failed_mask(frame)
     head = "".join(f"<th>{html.escape(str(column))}</th>" for column in frame.columns)
     rows = []
     for (index, row), is_failed in zip(frame.iterrows(), failed):
         cells = []
-        for value in row.tolist():
+        for column, value in zip(frame.columns, row.tolist()):
             text, number = _cell(value.item() if hasattr(value, "item") else value)
-            kind = "num" if number else ("text" if len(text) > 40 else "")
+            kind = "num" if number else ("text" if column in wide else "")
             cells.append(f'<td class="{kind}">{html.escape(text)}</td>' if kind else f"<td>{html.escape(text)}</td>")
         rows.append(f'<tr{" class=failed" if is_failed else ""}>{"".join(cells)}</tr>')
     return f"<table><thead><tr>{head}</tr></thead><tbody>\n" + "\n".join(rows) + "\n</tbody></table>"
@@ -123,10 +124,11 @@ def comparison_page(comparison: pd.DataFrame, title: str, source,
     if notes is not None and {"quantity", "key"} <= set(notes.columns):
         extra = notes.drop_duplicates(["quantity", "key"])
         joined = comparison.merge(extra, on=["quantity", "key"], how="left", suffixes=("", "_note"))
-    if failed.any():  # the comparison's columns, the deviation in tolerances and the reason
+    if failed.any():  # the reason right after the row's name, then the numbers
         failures = joined[failed.to_numpy()]
-        columns = ["quantity", "key", "published", "ours", "ours_sem", "tolerance"]
-        columns += [c for c in ("deviation_in_tolerances", "reason") if c in failures.columns]
+        columns = ["quantity", "key"] + (["reason"] if "reason" in failures.columns else [])
+        columns += ["published", "ours", "ours_sem", "tolerance"]
+        columns += ["deviation_in_tolerances"] if "deviation_in_tolerances" in failures.columns else []
         parts += ["<h2>Rows that do not pass</h2>", html_table(failures[columns])]
     parts += ["<h2>Every row</h2>", html_table(joined)]
     return _page(title, "\n".join(parts))
