@@ -1,0 +1,90 @@
+"""d-generic shell counts of the YT construction: exact in 3D, identical to the 2D kernels."""
+
+import numpy as np
+import pytest
+
+from randmedia.describe.two_phase import RadialBinning
+from randmedia.generate import yeong_torquato as yt
+from randmedia.generate.yt_stencil import Stencil, apply_flips, shell_counts
+
+
+def brute_force_counts(image, cutoff):
+    """h[x, b - 1] = sum over v with |v| <= cutoff in bin b of image[x + v] (np.roll)."""
+    binning = RadialBinning.build(image.shape, cutoff)
+    h = np.zeros((image.size, binning.counts.size - 1), dtype=np.int64)
+    axes = tuple(range(image.ndim))
+    for v, b in zip(binning.displacements(), binning.bin_of):
+        if b == 0:
+            continue
+        h[:, b - 1] += np.roll(image, tuple(-c for c in v), axis=axes).reshape(-1)
+    return h
+
+
+@pytest.mark.parametrize("shape, cutoff", [((12, 13, 14), 4.5), ((11, 11, 11), 5.0),
+                                           ((9, 16, 10), 4.0), ((17, 15), 7.0)])
+def test_shell_counts_fft_and_flips_equal_brute_force(shape, cutoff):
+    rng = np.random.default_rng(sum(shape))
+    image = (rng.random(shape) < 0.35).astype(np.uint8)
+    stencil = Stencil(shape, cutoff)
+    expected = brute_force_counts(image, cutoff)
+    np.testing.assert_array_equal(shell_counts(image, stencil), expected)
+    # every tracked voxel applied as a +1 flip to zero counts
+    h = np.zeros((image.size, stencil.n_columns), dtype=np.int16)
+    apply_flips(h, stencil, np.flatnonzero(image), np.ones(int(image.sum()), dtype=np.int16))
+    np.testing.assert_array_equal(h, expected)
+
+
+def test_a_batch_of_swaps_gives_the_counts_of_the_new_image_3d():
+    rng = np.random.default_rng(5)
+    shape = (14, 12, 13)
+    image = (rng.random(shape) < 0.3).astype(np.uint8).reshape(-1)
+    stencil = Stencil(shape, 5.5)
+    h = shell_counts(image.reshape(shape), stencil)
+    flips, signs = [], []
+    for _ in range(60):  # swaps: one voxel of each phase (a voxel may flip more than once)
+        p = rng.choice(np.flatnonzero(image == 1))
+        q = rng.choice(np.flatnonzero(image == 0))
+        image[p], image[q] = 0, 1
+        flips += [p, q]
+        signs += [-1, 1]
+    apply_flips(h, stencil, np.array(flips), np.array(signs))
+    np.testing.assert_array_equal(h, shell_counts(image.reshape(shape), stencil))
+
+
+@pytest.mark.parametrize("side, cutoff", [(31, 10.0), (40, 12.5), (23, 11.0)])
+def test_two_dimensional_counts_equal_the_2d_construction_kernels(side, cutoff):
+    """Same integers as yeong_torquato's _shell_counts and _apply_flips (so the 2D
+    trajectory does not change when the construction moves onto these kernels)."""
+    rng = np.random.default_rng(side)
+    image = (rng.random(side * side) < 0.3).astype(np.uint8)
+    geometry = yt._Geometry(side, cutoff)
+    stencil = Stencil((side, side), cutoff)
+    np.testing.assert_array_equal(stencil.offsets[:, 1:], geometry.offsets)
+    np.testing.assert_array_equal(stencil.column, geometry.column)
+    reference = yt._shell_counts(image, side, geometry.offsets, geometry.column, geometry.n_columns)
+    ours = shell_counts(image.reshape(side, side), stencil)
+    np.testing.assert_array_equal(ours, reference)
+    flips = rng.integers(0, side * side, 300).astype(np.int64)
+    signs = np.where(rng.random(300) < 0.5, 1, -1).astype(np.int16)
+    yt._apply_flips(reference, side, flips, signs, 300, *geometry.runs)
+    apply_flips(ours, stencil, flips, signs)
+    np.testing.assert_array_equal(ours, reference)
+
+
+def test_column_table_by_squared_length_matches_the_bins():
+    stencil = Stencil((20, 21, 22), 7.3)
+    d2 = (stencil.offsets**2).sum(axis=1)
+    np.testing.assert_array_equal(stencil.column_of_d2[d2], stencil.column)
+    outside = np.setdiff1d(np.arange(stencil.column_of_d2.size), d2)
+    assert np.all(stencil.column_of_d2[outside] == -1)
+    assert stencil.offsets.shape == (int(stencil.binning.counts[1:].sum()), 3)
+
+
+def test_rejects_bad_shapes_and_overflowing_shells():
+    with pytest.raises(ValueError, match="shape"):
+        Stencil((5,), 1.0)
+    stencil = Stencil((12, 12, 12), 3.0)
+    with pytest.raises(ValueError, match="int16"):
+        apply_flips(np.zeros((12**3, stencil.n_columns), dtype=np.int32), stencil, [0], [1])
+    with pytest.raises(ValueError, match="shape"):
+        shell_counts(np.zeros((12, 12)), stencil)
