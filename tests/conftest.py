@@ -24,6 +24,28 @@ def quick_config(workdir: Path = REPO) -> dict:
     return load_config(workdir / "config" / "config.yaml", workdir / "config" / "quick.yaml")
 
 
+def assert_comparison_notes(table, notes, k_sigma: float) -> None:
+    """comparison_notes.csv against its comparison.csv: the notes columns, one row per comparison
+    row with the same quantity and key in the same order, a reason for every failing row and
+    none for a passing one, and a budget that adds up to the tolerance:
+    k_sigma hypot(SEM, published_err) + rounding + systematic (a missing SEM counts as 0)."""
+    import numpy as np
+
+    from randmedia.compare import NOTE_COLUMNS
+
+    assert tuple(notes.columns) == NOTE_COLUMNS
+    assert len(notes) == len(table)
+    assert list(notes["quantity"]) == list(table["quantity"])
+    assert list(notes["key"]) == list(table["key"])
+    passed = table["passed"].to_numpy(bool)
+    reasons = notes["reason"].astype(object).fillna("")  # read back as NaN where empty
+    assert (reasons[passed] == "").all(), notes[passed & (reasons != "")]
+    assert (reasons[~passed] != "").all(), table[~passed & (reasons == "")]
+    budget = (k_sigma * np.hypot(table["ours_sem"].fillna(0.0), notes["published_err"])
+              + notes["rounding"] + notes["systematic"])
+    np.testing.assert_allclose(budget, table["tolerance"], rtol=1e-12, atol=1e-15)
+
+
 def copy_workflow(destination: Path) -> Path:
     """A runnable copy of the workflow (its own results/, .snakemake/, numba cache)."""
     destination.mkdir(parents=True, exist_ok=True)

@@ -8,6 +8,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
+from conftest import assert_comparison_notes
 from conftest import quick_config as load_quick_config
 from randmedia.compare import COLUMNS, judged_deviation
 from randmedia.io import read_dataset
@@ -17,6 +18,7 @@ pytestmark = pytest.mark.workflow
 #: outputs of debye2020 beyond those test_workflow.EXPECTED_OUTPUTS lists
 EXPECTED_OUTPUTS_DEBYE2020 = [
     "results/debye2020/fits/surface_pores.nc",
+    "results/debye2020/comparison_notes.csv",
     "results/debye2020/validation/overlapping_disks_level_set.pdf",
     "results/debye2020/validation/overlapping_disks_level_set.png",
     "results/debye2020/descriptors/overlapping_disks_phi0.3_surface.nc",
@@ -60,6 +62,17 @@ def test_comparison_has_a_row_for_every_quoted_number(quick_run, table):
     assert not missing, missing
     assert (table["passed"] == (judged_deviation(table) <= table["tolerance"])).all()
     assert (table["tolerance"] >= 3 * table["ours_sem"].fillna(0)).all()
+
+
+def test_comparison_notes_follow_the_comparison_rows(quick_run, table):
+    """comparison_notes.csv: a row per comparison row, same order, the budget adds up to the
+    tolerance, a reason for every failing row (the quick config's parameter rows: its own)."""
+    from randmedia.compare.debye2020 import REASON_PARAMETER
+
+    notes = pd.read_csv(quick_run / "results/debye2020/comparison_notes.csv")
+    assert_comparison_notes(table, notes, load_quick_config(quick_run)["comparison"]["k_sigma"])
+    parameters = table["quantity"].isin(["length_scale_a", "cutoff_lc", "system_size_L", "realizations_per_phi2"])
+    assert (notes.loc[parameters & ~table["passed"], "reason"] == REASON_PARAMETER).all()
 
 
 def test_parameter_rows_report_the_configured_values(table, quick_config):

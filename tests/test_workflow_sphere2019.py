@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from conftest import quick_config
+from conftest import assert_comparison_notes, quick_config
 from randmedia.compare import COLUMNS, judged_deviation
 from randmedia.describe.sphere_points import CAP_VARIANCE
 from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of
@@ -27,7 +27,7 @@ def quick(quick_run):
 
 def test_every_sphere2019_target_exists(quick):
     workdir, _ = quick
-    outputs = ["comparison.csv", "tables/table1.csv", "tables/mc_runs.csv", "fits/exponents.nc"]
+    outputs = ["comparison.csv", "comparison_notes.csv", "tables/table1.csv", "tables/mc_runs.csv", "fits/exponents.nc"]
     outputs += [f"figures/fig{n:02d}.{ext}" for n in range(1, 9) for ext in ("pdf", "png")]
     outputs += [f"figures/fig{n:02d}_alpha_cubed.{ext}" for n in range(5, 9) for ext in ("pdf", "png")]
     for relative in outputs:
@@ -81,6 +81,23 @@ def test_table1_and_comparison_rows(quick):
     assert (table["delta_err"] > 0).all() and np.isfinite(table["delta"]).all()
     fluids = table[table["system"].isin(section["fluids"]["systems"])]
     assert np.isfinite(fluids["delta_three_origins"]).all() and (fluids["delta_three_origins_err"] > 0).all()
+
+
+def test_comparison_notes_follow_the_comparison_rows(quick):
+    """comparison_notes.csv: a row per comparison row, same order, budget = tolerance (the
+    rounding margin of every exponent row is config rounding_margin), reasons of failing rows."""
+    from randmedia.compare.sphere2019 import FAILURE_REASONS
+
+    workdir, section = quick
+    comparison = pd.read_csv(workdir / "results/sphere2019/comparison.csv")
+    notes = pd.read_csv(workdir / "results/sphere2019/comparison_notes.csv")
+    assert_comparison_notes(comparison, notes, quick_config(workdir)["comparison"]["k_sigma"])
+    exponents = (comparison["quantity"] == "number_variance_exponent_delta").to_numpy()
+    assert (notes.loc[exponents, "rounding"] == section["fit"]["rounding_margin"]).all()
+    table = pd.read_csv(workdir / "results/sphere2019/tables/table1.csv")
+    reasons = notes["reason"].astype(object).fillna("")
+    for system, passed, reason in zip(table["system"], comparison["passed"], reasons):
+        assert reason == ("" if passed else FAILURE_REASONS.get(system, "not identified")), system
 
 
 def test_quick_table_entries_with_known_answers(quick):

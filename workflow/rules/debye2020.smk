@@ -7,7 +7,7 @@
 # * Sec. VI: digitized overlapping disks (validation of every estimator against the
 #   exact Eqs. 32-39) and equilibrium hard disks (images from debye2020_hard_disks.smk,
 #   included before this file) -> Figs. 8-12;
-# * tables/numbers.csv and comparison.csv.
+# * tables/numbers.csv, comparison.csv and comparison_notes.csv.
 
 import re
 
@@ -368,7 +368,7 @@ rule debye2020_numbers:
 
 
 rule debye2020_comparison:
-    """results/debye2020/comparison.csv: every computed value against its reference."""
+    """results/debye2020/comparison.csv: every computed value against its reference (+ comparison_notes.csv)."""
     input:
         s2=DISKS_S2,
         disk_chords=DISKS_CHORDS,
@@ -381,7 +381,8 @@ rule debye2020_comparison:
         quoted="config/reference/debye2020_quoted_numbers.csv",
         code=script_sources("../scripts/debye2020/comparison.py"),
     output:
-        "results/debye2020/comparison.csv",
+        comparison="results/debye2020/comparison.csv",
+        notes="results/debye2020/comparison_notes.csv",
     params:
         overlapping_disks=DISKS,
         media={key: MEDIA[key] for key in ("a", "lc", "L", "phi2", "n_samples")},
@@ -569,6 +570,7 @@ rule debye2020_overlapping_disks_level_set_figure:
 
 DEBYE2020_TARGETS = HARD_DISKS_TARGETS + [
     "results/debye2020/comparison.csv",
+    "results/debye2020/comparison_notes.csv",
     "results/debye2020/tables/numbers.csv",
     DISKS_FIGURE,
     DISKS_FIGURE.replace(".pdf", ".png"),

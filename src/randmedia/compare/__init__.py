@@ -12,6 +12,18 @@ exact results), and ``systematic`` a margin whose origin the caller states
 published value that is a quality bound rather than a measurement (e.g. "the
 discrepancies are as small as 2 x 10^-4") is compared with ``upper_bound=True``:
 ``passed`` is then ``ours - published <= tolerance``, and the row's key says so.
+
+Notes. A row of :func:`compare` also keeps its error budget (``published_err``,
+``rounding`` -- half a unit of the published value's last digit, a part of the
+systematic margin -- and the rest of ``systematic``) and the reason the caller
+identified should the row fail (``reason_if_failed``, written beside the row
+builder and attached to the kind of row, not to one run's outcome). From those,
+:func:`notes_frame` builds ``comparison_notes.csv`` (columns :data:`NOTE_COLUMNS`):
+the budget, ``deviation_in_tolerances`` (the judged deviation over the tolerance,
+so a row passes exactly when it is <= 1; NaN for a zero tolerance or a missing
+value) and, for failing rows only, the reason ("not identified" if none was
+given). Rows compared elsewhere (the columns of :data:`COLUMNS` only) get their
+budget from :func:`checked_row`.
 """
 
 from __future__ import annotations
@@ -23,6 +35,16 @@ from typing import Iterable, Mapping
 import pandas as pd
 
 COLUMNS = ("quantity", "key", "published", "ours", "ours_sem", "tolerance", "passed")
+
+#: columns of comparison_notes.csv, one row per comparison row (module docstring)
+NOTE_COLUMNS = ("quantity", "key", "published_err", "rounding", "systematic",
+                "deviation_in_tolerances", "reason")
+
+#: the budget a row of :func:`compare` keeps beside :data:`COLUMNS`
+BUDGET = ("published_err", "rounding", "systematic", "reason_if_failed")
+
+#: reason of a failing row whose builder names none
+NOT_IDENTIFIED = "not identified"
 
 #: appended to the key of an upper-bound row (module docstring)
 UPPER_BOUND_NOTE = " (upper bound: passed if ours <= published)"
@@ -39,12 +61,20 @@ def tolerance(ours_sem: float, *, k_sigma: float, published_err: float = 0.0,
 
 
 def compare(quantity: str, key: str, published: float, ours: float, ours_sem: float, *,
-            k_sigma: float, published_err: float = 0.0, systematic: float = 0.0,
-            upper_bound: bool = False) -> dict:
-    """One comparison row (a dict with the keys of :data:`COLUMNS`); ``upper_bound``: the
-    published value bounds ours from above (module docstring)."""
-    tol = tolerance(ours_sem, k_sigma=k_sigma, published_err=published_err, systematic=systematic)
-    deviation = ours - published if upper_bound else abs(ours - published)
+            k_sigma: float, published_err: float = 0.0, rounding: float = 0.0,
+            systematic: float = 0.0, upper_bound: bool = False, exact: bool = False,
+            reason_if_failed: str = "") -> dict:
+    """One comparison row: a dict with the keys of :data:`COLUMNS` and of :data:`BUDGET`
+    (module docstring). The tolerance's margin is ``rounding + systematic``;
+    ``upper_bound``: the published value bounds ours from above; ``exact``: the row passes
+    only if ours equals the published value (e.g. an infinity), with tolerance 0."""
+    tol = tolerance(ours_sem, k_sigma=k_sigma, published_err=published_err,
+                    systematic=rounding + systematic)
+    if exact:
+        tol, passed = 0.0, bool(ours == published)
+    else:
+        deviation = ours - published if upper_bound else abs(ours - published)
+        passed = bool(deviation <= tol)  # False for NaN
     return {
         "quantity": quantity,
         "key": key + UPPER_BOUND_NOTE if upper_bound else key,
@@ -52,8 +82,23 @@ def compare(quantity: str, key: str, published: float, ours: float, ours_sem: fl
         "ours": float(ours),
         "ours_sem": float(ours_sem),
         "tolerance": float(tol),
-        "passed": bool(deviation <= tol),  # False for NaN
+        "passed": passed,
+        "published_err": published_err,
+        "rounding": rounding,
+        "systematic": systematic,
+        "reason_if_failed": reason_if_failed,
     }
+
+
+def checked_row(row: Mapping, *, k_sigma: float, reason_if_failed: str = "") -> dict:
+    """A row compared elsewhere (the columns of :data:`COLUMNS`, e.g. a generator's
+    validation csv), kept as it is, with the budget :func:`notes_frame` needs: no published
+    error or rounding, and as systematic margin the part of the tolerance beyond
+    k_sigma x SEM."""
+    sem = float(row["ours_sem"]) if math.isfinite(row["ours_sem"]) else 0.0
+    return {**{column: row[column] for column in COLUMNS}, "published_err": 0.0, "rounding": 0.0,
+            "systematic": max(0.0, float(row["tolerance"]) - k_sigma * sem),
+            "reason_if_failed": reason_if_failed}
 
 
 def judged_deviation(frame: pd.DataFrame) -> pd.Series:
@@ -72,6 +117,32 @@ def comparison_frame(rows: Iterable[Mapping]) -> pd.DataFrame:
     if missing:
         raise ValueError(f"comparison rows lack values in columns {missing}")
     return frame
+
+
+def notes_frame(rows: Iterable[Mapping]) -> pd.DataFrame:
+    """The notes of comparison rows (those of :func:`compare` or :func:`checked_row`, in
+    the order of the comparison table): exactly the columns of :data:`NOTE_COLUMNS`, one row
+    per comparison row (module docstring)."""
+    notes = []
+    for row in rows:
+        missing = [name for name in BUDGET if name not in row]
+        if missing:
+            raise ValueError(f"comparison row {row['quantity']!r} [{row['key']}] lacks its budget "
+                             f"{missing} (build it with compare() or checked_row())")
+        tol = float(row["tolerance"])
+        deviation = row["ours"] - row["published"]
+        if not str(row["key"]).endswith(UPPER_BOUND_NOTE):
+            deviation = abs(deviation)
+        passed = bool(row["passed"])
+        notes.append({
+            "quantity": row["quantity"], "key": row["key"],
+            "published_err": row["published_err"], "rounding": row["rounding"],
+            "systematic": row["systematic"],
+            "deviation_in_tolerances": (deviation / tol if tol > 0 and math.isfinite(deviation)
+                                        else math.nan),
+            "reason": "" if passed else (row["reason_if_failed"] or NOT_IDENTIFIED),
+        })
+    return pd.DataFrame(notes, columns=list(NOTE_COLUMNS))
 
 
 def read_reference(path: str | Path, required_columns: Iterable[str]) -> pd.DataFrame:

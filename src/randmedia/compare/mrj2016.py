@@ -31,7 +31,8 @@ from decimal import Decimal
 import numpy as np
 import pandas as pd
 
-from randmedia.compare import COLUMNS, comparison_frame, read_reference, tolerance
+from randmedia.compare import (checked_row, compare, comparison_frame, notes_frame,
+                               read_reference)
 from randmedia.io import read_dataset
 
 #: published statistical errors (upper bounds stated in the captions of Tables II, III)
@@ -220,43 +221,29 @@ TABLES = {
 
 
 class Rows:
-    """Collects comparison rows and their notes (error budget, reason for a failure)."""
+    """Collects comparison rows with their budget and reason for a failure
+    (:func:`randmedia.compare.compare`); ``notes_frame(rows.rows)`` gives the notes."""
 
     def __init__(self, k_sigma: float):
         self.k_sigma = k_sigma
-        self.rows, self.notes = [], []
+        self.rows = []
 
     def add(self, quantity, key, published, ours, ours_sem=math.nan, *, published_err=0.0,
             rounding=0.0, systematic=0.0, reason_if_failed="", exact_match=False):
+        """A missing SEM (NaN, e.g. one sample or a configured value) adds nothing to the
+        tolerance; the row keeps it as NaN. ``exact_match``: e.g. F_ss(0) = inf passes only
+        if ours is the same infinity."""
         sem = 0.0 if not np.isfinite(ours_sem) else float(ours_sem)
-        tol = tolerance(sem, k_sigma=self.k_sigma, published_err=published_err,
-                        systematic=rounding + systematic)
-        if exact_match:  # e.g. F_ss(0) = inf: passes only if ours is the same infinity
-            passed = bool(ours == published)
-            tol = 0.0
-        else:
-            passed = bool(abs(ours - published) <= tol)
-        self.rows.append({"quantity": quantity, "key": key, "published": float(published),
-                          "ours": float(ours), "ours_sem": float(ours_sem), "tolerance": float(tol),
-                          "passed": passed})
-        self.notes.append({"quantity": quantity, "key": key, "published_err": published_err,
-                           "rounding": rounding, "systematic": systematic,
-                           "deviation_in_tolerances": (abs(ours - published) / tol
-                                                       if tol > 0 and np.isfinite(ours) else math.nan),
-                           "reason": "" if passed else (reason_if_failed or "not identified")})
+        row = compare(quantity, key, published, ours, sem, k_sigma=self.k_sigma,
+                      published_err=published_err, rounding=rounding, systematic=systematic,
+                      exact=exact_match, reason_if_failed=reason_if_failed)
+        row["ours_sem"] = float(ours_sem)
+        self.rows.append(row)
 
     def add_checked(self, frame: pd.DataFrame, reason_if_failed: str):
-        """Rows already compared elsewhere (the columns of ``COLUMNS``, e.g. a generator's
-        validation csv), kept as they are; their note takes as systematic margin the part of
-        the tolerance beyond k_sigma x SEM."""
-        for row in frame.to_dict("records"):
-            sem = 0.0 if not np.isfinite(row["ours_sem"]) else float(row["ours_sem"])
-            tol, deviation = float(row["tolerance"]), abs(row["ours"] - row["published"])
-            self.rows.append({key: row[key] for key in COLUMNS})
-            self.notes.append({"quantity": row["quantity"], "key": row["key"], "published_err": 0.0,
-                               "rounding": 0.0, "systematic": max(0.0, tol - self.k_sigma * sem),
-                               "deviation_in_tolerances": deviation / tol if tol > 0 and np.isfinite(deviation) else math.nan,
-                               "reason": "" if bool(row["passed"]) else reason_if_failed})
+        """Rows already compared elsewhere (:func:`randmedia.compare.checked_row`)."""
+        self.rows += [checked_row(row, k_sigma=self.k_sigma, reason_if_failed=reason_if_failed)
+                      for row in frame.to_dict("records")]
 
 
 def _phi_reason(system, corr):
@@ -541,4 +528,4 @@ def comparison(inputs, tables, params, checked_rows: pd.DataFrame | None = None)
     _validation_rows(rows, inputs, params)
     if checked_rows is not None:
         rows.add_checked(checked_rows, "see the generator's validation files (results/mrj2016/validation/)")
-    return comparison_frame(rows.rows), pd.DataFrame(rows.notes)
+    return comparison_frame(rows.rows), notes_frame(rows.rows)
