@@ -19,10 +19,8 @@ from randmedia import report
 from randmedia.config import load_config, validate_config
 
 PAPERS = ("debye2020", "mrj2016", "sphere2019")
-#: rules with a script but no benchmark: the report pages themselves (they merge the
-#: benchmarks), and two comparison rules another change is rewriting (benchmark to follow)
-NO_BENCHMARK = {f"{paper}_report_tables" for paper in PAPERS} | {"debye2020_comparison",
-                                                                 "sphere2019_comparison"}
+#: rules with a script but no benchmark: the report pages themselves (they merge the benchmarks)
+NO_BENCHMARK = {f"{paper}_report_tables" for paper in PAPERS}
 
 
 # --------------------------------------------------------------------------- randmedia.report

@@ -390,6 +390,8 @@ rule debye2020_comparison:
         compare_r_max=DISKS["compare_r_max_over_R"] * DISKS["radius"],
         formula_r_min=FITS["formula_r_min"],
         k_sigma=config["comparison"]["k_sigma"],
+    benchmark:
+        "results/debye2020/benchmarks/comparison.tsv"
     log:
         "results/debye2020/logs/comparison.log",
     script:

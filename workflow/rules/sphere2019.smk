@@ -160,6 +160,8 @@ rule sphere2019_comparison:
     params:
         k_sigma=config["comparison"]["k_sigma"],
         rounding_margin=SPHERE["fit"]["rounding_margin"],
+    benchmark:
+        "results/sphere2019/benchmarks/comparison.tsv"
     log:
         "results/sphere2019/logs/comparison.log",
     script:
