@@ -1,4 +1,4 @@
-"""Benchmark of the hard-particle NVT Monte Carlo (randmedia.generate.hard_spheres).
+"""Benchmark of the hard-particle NVT Monte Carlo (randmedia.generate.hard_particles).
 
 Prints, from one run on this machine (CPU time of this process, so other load on the
 machine matters less than for wall time):
@@ -25,7 +25,9 @@ os.environ.setdefault("NUMBA_NUM_THREADS", "1")
 
 import numpy as np  # noqa: E402
 
-from randmedia.generate.hard_spheres import HardParticleChain, MCSettings, cubic_box  # noqa: E402
+from randmedia.generate.hard_particles.chain import HardParticleChain  # noqa: E402
+from randmedia.generate.hard_particles.geometry import cubic_box  # noqa: E402
+from randmedia.generate.hard_particles.settings import MCSettings  # noqa: E402
 
 
 def equilibrated_chain(n, phi, dim, seed=0):

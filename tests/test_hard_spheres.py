@@ -1,5 +1,5 @@
 """Hard disks and spheres: equations of state (randmedia.theory.hard_spheres) and the NVT
-Monte Carlo generator (randmedia.generate.hard_spheres)."""
+Monte Carlo generator (randmedia.generate.hard_particles)."""
 
 from __future__ import annotations
 
@@ -69,7 +69,10 @@ def test_eos_refuses_bad_input():
 # --------------------------------------------------------------------------- Monte Carlo
 
 from randmedia.describe.bond_order import crystalline_fraction, global_q6  # noqa: E402
-from randmedia.generate import hard_spheres as mc  # noqa: E402
+from randmedia.generate.hard_particles.chain import HardParticleChain  # noqa: E402
+from randmedia.generate.hard_particles.geometry import count_overlaps, cubic_box  # noqa: E402
+from randmedia.generate.hard_particles.run import run_chain  # noqa: E402
+from randmedia.generate.hard_particles.settings import MCSettings  # noqa: E402
 
 
 def _brute_force_min_distance(positions, box):
@@ -83,15 +86,15 @@ def _brute_force_min_distance(positions, box):
 @pytest.fixture(scope="module")
 def liquid_3d():
     """N = 256 spheres at phi = 0.478 (simple cubic start), 16 samples 0.3 D^2 apart."""
-    settings = mc.MCSettings(equilibration_msd=1.5, sample_msd=0.3, measure_every=2)
-    box = mc.cubic_box(256, 0.478, 3)
-    return mc.run_chain(256, box, 1.0, 16, np.random.default_rng(11), settings)
+    settings = MCSettings(equilibration_msd=1.5, sample_msd=0.3, measure_every=2)
+    box = cubic_box(256, 0.478, 3)
+    return run_chain(256, box, 1.0, 16, np.random.default_rng(11), settings)
 
 
 def test_no_overlaps_ever(liquid_3d):
     box = liquid_3d.box_lengths
     for sample in liquid_3d.samples:
-        assert mc.count_overlaps(sample.positions, box, 1.0) == 0
+        assert count_overlaps(sample.positions, box, 1.0) == 0
         assert _brute_force_min_distance(sample.positions, box) >= 1.0
         assert np.all((sample.positions >= 0) & (sample.positions < box))
 
@@ -123,8 +126,8 @@ def test_two_disks_sample_the_uniform_measure():
     """Detailed balance: two hard disks on a torus are uniform over the allowed region, so
     their minimum-image distance has density prop. to r on D < r < L/2 (exact)."""
     side = 4.0
-    settings = mc.MCSettings(equilibration_msd=1.0, sample_msd=1.0, block_sweeps=5)
-    result = mc.run_chain(2, [side, side], 1.0, 3000, np.random.default_rng(3), settings)
+    settings = MCSettings(equilibration_msd=1.0, sample_msd=1.0, block_sweeps=5)
+    result = run_chain(2, [side, side], 1.0, 3000, np.random.default_rng(3), settings)
     r = np.array([np.linalg.norm(_minimum_image(s.positions[1] - s.positions[0], side))
                   for s in result.samples])
     assert r.min() >= 1.0
@@ -143,10 +146,10 @@ def _minimum_image(d, side):
 
 def test_low_density_pressure_against_the_exact_virial_series():
     """phi = 0.1 spheres (RSA start): Z within 1 % of the converged virial series."""
-    settings = mc.MCSettings(equilibration_msd=1.0, sample_msd=0.5, measure_every=1,
+    settings = MCSettings(equilibration_msd=1.0, sample_msd=0.5, measure_every=1,
                              contact_range=0.2)
-    box = mc.cubic_box(200, 0.1, 3)
-    result = mc.run_chain(200, box, 1.0, 60, np.random.default_rng(4), settings, start="rsa")
+    box = cubic_box(200, 0.1, 3)
+    result = run_chain(200, box, 1.0, 60, np.random.default_rng(4), settings, start="rsa")
     assert result.equilibration["start"].startswith("random sequential addition")
     exact = eos.compressibility_factor(0.1, 3, "virial")
     assert result.contact["reduced_pressure"] == pytest.approx(exact, rel=0.01)
@@ -155,10 +158,10 @@ def test_low_density_pressure_against_the_exact_virial_series():
 def test_hard_disks_pressure_matches_the_2d_equation_of_state():
     """400 disks at phi = 0.3 (the debye2020 density), quadratic contact fit over 0.2 D:
     within 1 % of Henderson's EOS; SEM over 500 samples ~0.3 %."""
-    settings = mc.MCSettings(equilibration_msd=2.0, sample_msd=1.0, measure_every=1,
+    settings = MCSettings(equilibration_msd=2.0, sample_msd=1.0, measure_every=1,
                              contact_range=0.2, contact_order=2)
-    box = mc.cubic_box(400, 0.3, 2)
-    result = mc.run_chain(400, box, 1.0, 500, np.random.default_rng(5), settings)
+    box = cubic_box(400, 0.3, 2)
+    result = run_chain(400, box, 1.0, 500, np.random.default_rng(5), settings)
     z = np.array([s.diagnostics["reduced_pressure"] for s in result.samples])
     expected = eos.compressibility_factor(0.3, 2)
     assert z.std(ddof=1) / np.sqrt(len(z)) < 0.004 * expected
@@ -168,23 +171,23 @@ def test_hard_disks_pressure_matches_the_2d_equation_of_state():
 
 
 def test_rsa_start_with_compression_reaches_the_target():
-    box = mc.cubic_box(64, 0.45, 3)
-    settings = mc.MCSettings(equilibration_msd=0.5, sample_msd=0.2)
-    result = mc.run_chain(64, box, 1.0, 2, np.random.default_rng(6), settings, start="rsa")
+    box = cubic_box(64, 0.45, 3)
+    settings = MCSettings(equilibration_msd=0.5, sample_msd=0.2)
+    result = run_chain(64, box, 1.0, 2, np.random.default_rng(6), settings, start="rsa")
     assert result.equilibration["compression_sweeps"] > 0
-    assert mc.count_overlaps(result.samples[-1].positions, box, 1.0) == 0
+    assert count_overlaps(result.samples[-1].positions, box, 1.0) == 0
 
 
 def test_same_seed_same_chain_and_resume_after_interruption(tmp_path, monkeypatch):
-    box = mc.cubic_box(100, 0.4, 3)
-    settings = mc.MCSettings(equilibration_msd=0.5, sample_msd=0.2)
-    first = mc.run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings)
-    second = mc.run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings)
+    box = cubic_box(100, 0.4, 3)
+    settings = MCSettings(equilibration_msd=0.5, sample_msd=0.2)
+    first = run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings)
+    second = run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings)
     for a, b in zip(first.samples, second.samples):
         np.testing.assert_array_equal(a.positions, b.positions)
     # interrupted chain: checkpoint at every block, "killed" after 60 units of work
     checkpoint = tmp_path / "chain.npz"
-    original = mc.HardParticleChain.advance
+    original = HardParticleChain.advance
     calls = {"n": 0}
 
     def dying_advance(self):
@@ -193,13 +196,13 @@ def test_same_seed_same_chain_and_resume_after_interruption(tmp_path, monkeypatc
             raise KeyboardInterrupt("simulated kill")
         original(self)
 
-    monkeypatch.setattr(mc.HardParticleChain, "advance", dying_advance)
+    monkeypatch.setattr(HardParticleChain, "advance", dying_advance)
     with pytest.raises(KeyboardInterrupt):
-        mc.run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings,
+        run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings,
                      checkpoint=checkpoint, checkpoint_seconds=0.0)
     assert checkpoint.is_file()
-    monkeypatch.setattr(mc.HardParticleChain, "advance", original)
-    resumed = mc.run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings,
+    monkeypatch.setattr(HardParticleChain, "advance", original)
+    resumed = run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings,
                            checkpoint=checkpoint, checkpoint_seconds=0.0)
     assert not checkpoint.exists()
     for a, b in zip(first.samples, resumed.samples):
@@ -218,6 +221,6 @@ def test_same_seed_same_chain_and_resume_after_interruption(tmp_path, monkeypatc
 ])
 def test_impossible_input_is_refused(args, match):
     with pytest.raises(ValueError, match=match):
-        mc.run_chain(*args, 1, np.random.default_rng(0))
+        run_chain(*args, 1, np.random.default_rng(0))
     with pytest.raises(ValueError):
-        mc.MCSettings(target_acceptance=1.5)
+        MCSettings(target_acceptance=1.5)

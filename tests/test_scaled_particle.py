@@ -11,7 +11,9 @@ import pytest
 from scipy.integrate import quad
 from scipy.spatial import cKDTree
 
-from randmedia.generate import hard_spheres as mc
+from randmedia.generate.hard_particles.geometry import cubic_box
+from randmedia.generate.hard_particles.run import run_chain
+from randmedia.generate.hard_particles.settings import MCSettings
 from randmedia.theory import scaled_particle as spt
 
 REFERENCE = Path(__file__).resolve().parents[1] / "config" / "reference"
@@ -97,9 +99,9 @@ def _nearest_centre_distances(samples, box, n_points, rng):
 def test_hard_sphere_liquid_exclusion_probability_and_pore_moments():
     """Our liquid (N = 256, phi = 0.478): E_V(r) against the paper's Table II (their MC) and
     the scaled-particle curve; pore-size moments against the quoted 0.098 D, 0.014 D^2."""
-    settings = mc.MCSettings(equilibration_msd=1.5, sample_msd=0.3, measure_every=10)
-    box = mc.cubic_box(256, 0.478, 3)
-    result = mc.run_chain(256, box, 1.0, 12, np.random.default_rng(21), settings)
+    settings = MCSettings(equilibration_msd=1.5, sample_msd=0.3, measure_every=10)
+    box = cubic_box(256, 0.478, 3)
+    result = run_chain(256, box, 1.0, 12, np.random.default_rng(21), settings)
     r = _nearest_centre_distances(result.samples, box, 40000, np.random.default_rng(2))
     table = pd.read_csv(REFERENCE / "mrj2016_table2_equilibrium.csv").dropna(subset=["EV"])
     table = table[(table["r_over_D"] > 0.5) & (table["r_over_D"] <= 0.72)]
@@ -116,9 +118,9 @@ def test_hard_sphere_liquid_exclusion_probability_and_pore_moments():
 
 
 def test_hard_disk_pore_sizes_against_eq41():
-    settings = mc.MCSettings(equilibration_msd=2.0, sample_msd=1.0)
-    box = mc.cubic_box(400, 0.3, 2)
-    result = mc.run_chain(400, box, 1.0, 30, np.random.default_rng(22), settings)
+    settings = MCSettings(equilibration_msd=2.0, sample_msd=1.0)
+    box = cubic_box(400, 0.3, 2)
+    result = run_chain(400, box, 1.0, 30, np.random.default_rng(22), settings)
     r = _nearest_centre_distances(result.samples, box, 20000, np.random.default_rng(3))
     pores = r[r > 0.5] - 0.5
     for delta in (0.1, 0.25, 0.5, 0.75):

@@ -16,7 +16,7 @@ from conftest import quick_config, run_snakemake
 from randmedia.compare import COLUMNS
 from randmedia.generate import PARTICLE_CONFIG, PHASE_IMAGE
 from randmedia.generate.disks import digitize_disks
-from randmedia.generate.hard_spheres import count_overlaps
+from randmedia.generate.hard_particles.geometry import count_overlaps
 from randmedia.io import VariableSpec, read_dataset
 from randmedia.theory.hard_spheres import compressibility_factor
 

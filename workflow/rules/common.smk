@@ -179,7 +179,7 @@ def m_inputs(pairs):
 def m_describe_settings(kind, system, merge=False):
     """The config values a describe job of one kind uses, and nothing else (so that changing
     another kind's keys reruns none of its jobs): keyword arguments of
-    randmedia.describe.sphere_samples.describe (and, for the merge, of summarize).
+    randmedia.studies.mrj2016.describe (and, for the merge, of summarize).
     descriptors.chunk_size only sets how samples are split into jobs (the chunk files and
     `first`), not any value; number_variance.fit_r_min is used by the merge alone."""
     if kind == "correlation":

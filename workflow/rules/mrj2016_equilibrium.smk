@@ -1,6 +1,6 @@
 # Klatt & Torquato, PRE 94, 022152 (2016): the equilibrium hard-sphere liquid
 # at phi = 0.478 (system `equilibrium`) by NVT Monte Carlo
-# (randmedia.generate.hard_spheres, d-generic). Included before mrj2016.smk.
+# (randmedia.generate.hard_particles, d-generic). Included before mrj2016.smk.
 #
 # Names for the other rule files:
 #   MRJ2016_EQUILIBRIUM  the config section mrj2016.equilibrium

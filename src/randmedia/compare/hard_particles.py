@@ -1,4 +1,4 @@
-"""Validation of the equilibrium hard-disk / hard-sphere samples (randmedia.generate.hard_spheres).
+"""Validation of the equilibrium hard-disk / hard-sphere samples (randmedia.generate.hard_particles).
 
 Per-sample diagnostics (read from the sample files' attributes) and comparison rows:
 
@@ -29,7 +29,8 @@ import numpy as np
 import pandas as pd
 
 from randmedia.compare import compare
-from randmedia.generate.hard_spheres import MCSettings, contact_fit
+from randmedia.generate.hard_particles.contact import contact_fit
+from randmedia.generate.hard_particles.settings import MCSettings
 from randmedia.stats import standard_error
 
 #: per-sample attributes copied into the diagnostics table (those present)

@@ -1,6 +1,6 @@
 """Tables I-V and the comparison of Klatt & Torquato, PRE 94, 022152 (2016).
 
-Inputs are the merged descriptor files of :mod:`randmedia.describe.sphere_samples`
+Inputs are the merged descriptor files of :mod:`randmedia.studies.mrj2016`
 (names ``{kind}_{system}``). Tables hold *our* values at the paper's r/D and kD
 with their SEM over samples; :func:`comparison` puts every published table cell
 and quoted number (``config/reference/mrj2016_*.csv``) beside ours, plus rows

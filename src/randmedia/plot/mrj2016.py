@@ -448,8 +448,8 @@ def render_spheres(positions, box, side: float, pixels: int = 360, diameter: flo
 
 def fig01(inputs, params, log):
     """Fig. 1: renderings of (a) overlapping spheres, (b) the liquid, (c) an MRJ packing."""
-    from randmedia.describe.sphere_samples import load_configuration
     from randmedia.plot.style import PAGE_WIDTH
+    from randmedia.studies.mrj2016 import load_configuration
 
     fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=1.0)
     side = float(params["figures"].get("render_side", 8.0))

@@ -11,8 +11,9 @@ import xarray as xr
 
 from randmedia.generate import particle_config_dataset, phase_image_dataset
 from randmedia.generate.disks import digitize_disks
-from randmedia.generate.hard_spheres import (MCSettings, contact_histogram_dataset,
-                                             run_chain, sample_attrs)
+from randmedia.generate.hard_particles.datasets import contact_histogram_dataset, sample_attrs
+from randmedia.generate.hard_particles.run import run_chain
+from randmedia.generate.hard_particles.settings import MCSettings
 from randmedia.io import write_dataset
 from randmedia.seeding import sample_rng, sample_seed
 from randmedia.theory.hard_spheres import compressibility_factor

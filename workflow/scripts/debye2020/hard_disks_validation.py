@@ -9,7 +9,7 @@ from randmedia.compare.hard_particles import (decorrelation_rows, diagnostics_fr
                                               digitized_fraction_row, pooled_contact,
                                               pressure_row)
 from randmedia.generate import PHASE_IMAGE
-from randmedia.generate.hard_spheres import MCSettings
+from randmedia.generate.hard_particles.settings import MCSettings
 from randmedia.io import VariableSpec, read_dataset, write_csv
 from randmedia.plot.hard_particles import eos_validation_figure
 

@@ -5,18 +5,18 @@ log = start_job(snakemake)
 
 import time
 
-from randmedia.describe import sphere_samples
+from randmedia.studies import mrj2016
 from randmedia.io import write_dataset
 
 params = dict(snakemake.params.items())
 system, kind = snakemake.wildcards.system, snakemake.wildcards.kind
 paths = list(snakemake.input.samples)
 start = time.perf_counter()
-configs = [sphere_samples.load_configuration(path) for path in paths]
+configs = [mrj2016.load_configuration(path) for path in paths]
 log.info("%s %s: samples %d-%d", system, kind, params["first"], params["first"] + len(configs) - 1)
-dataset, used = sphere_samples.describe(kind, system, configs, first=params["first"],
-                                        nthreads=snakemake.threads, log=log,
-                                        **params["settings"])
+dataset, used = mrj2016.describe(kind, system, configs, first=params["first"],
+                                 nthreads=snakemake.threads, log=log,
+                                 **params["settings"])
 elapsed = time.perf_counter() - start
 log.info("%d samples in %.1f s (%.2f s per sample)", len(configs), elapsed, elapsed / len(configs))
 dataset.attrs["sample_files"] = " ".join(paths)

@@ -6,7 +6,7 @@ log = start_job(snakemake)
 
 import time
 
-from randmedia.describe import sphere_samples
+from randmedia.studies import mrj2016
 from randmedia.io import read_dataset, write_dataset
 
 params = dict(snakemake.params.items())
@@ -15,17 +15,17 @@ settings = params["settings"]  # this kind's config values only
 used = {"system": system, "kind": kind, **settings}
 if "samples" in snakemake.input.keys():
     start = time.perf_counter()
-    configs = [sphere_samples.load_configuration(path) for path in snakemake.input.samples]
-    chunk, used_chunk = sphere_samples.describe(kind, system, configs, first=0,
-                                                nthreads=snakemake.threads, log=log,
-                                                **settings)
+    configs = [mrj2016.load_configuration(path) for path in snakemake.input.samples]
+    chunk, used_chunk = mrj2016.describe(kind, system, configs, first=0,
+                                         nthreads=snakemake.threads, log=log,
+                                         **settings)
     chunks = [chunk]
     used.update(used_chunk)
     log.info("%d samples described in %.1f s", len(configs), time.perf_counter() - start)
 else:
     chunks = [read_dataset(path, attrs=["kind"]) for path in snakemake.input.chunks]
-dataset = sphere_samples.summarize(chunks, kind, spectral=settings.get("spectral"),
-                                   windows=settings.get("windows"))
+dataset = mrj2016.summarize(chunks, kind, spectral=settings.get("spectral"),
+                            windows=settings.get("windows"))
 log.info("%s %s: %d samples merged", system, kind, dataset.sizes["sample"])
 dataset.attrs["system"] = system
 write_dataset(dataset, snakemake.output[0], rule=snakemake.rule, seed=None, config=used)

@@ -11,8 +11,10 @@ import xarray as xr
 
 from randmedia.describe.bond_order import crystalline_fraction, global_q6
 from randmedia.generate import particle_config_dataset
-from randmedia.generate.hard_spheres import (MCSettings, contact_histogram_dataset,
-                                             cubic_box, run_chain, sample_attrs)
+from randmedia.generate.hard_particles.datasets import contact_histogram_dataset, sample_attrs
+from randmedia.generate.hard_particles.geometry import cubic_box
+from randmedia.generate.hard_particles.run import run_chain
+from randmedia.generate.hard_particles.settings import MCSettings
 from randmedia.io import write_dataset
 from randmedia.seeding import sample_rng, sample_seed
 from randmedia.theory.hard_spheres import compressibility_factor

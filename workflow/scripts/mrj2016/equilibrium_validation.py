@@ -8,7 +8,7 @@ from randmedia.compare import comparison_frame
 from randmedia.compare.hard_particles import (decorrelation_rows, diagnostics_frame,
                                               pooled_contact, pressure_row)
 from randmedia.generate import PARTICLE_CONFIG
-from randmedia.generate.hard_spheres import MCSettings
+from randmedia.generate.hard_particles.settings import MCSettings
 from randmedia.io import VariableSpec, read_dataset, write_csv
 from randmedia.plot.hard_particles import eos_validation_figure
 

@@ -1,14 +1,24 @@
-"""Per-sample descriptor datasets of periodic sphere configurations, and their merge.
+"""Klatt & Torquato 2016 (mrj2016): per-sample descriptor datasets of its periodic sphere
+configurations, and their merge into one file per system and descriptor kind.
 
 The estimators live in :mod:`~randmedia.describe.packings` (Appendix A),
 :mod:`~randmedia.describe.spectral` (Sec. IV) and :mod:`~randmedia.describe.points`
 (Secs. V-VI). Here each is run over a list of configurations (one chunk of a
 system's samples) into an xarray Dataset with a ``sample`` dimension, and the
 chunks of a system are concatenated and summarized: ``{name}_mean`` and
-``{name}_sem`` (standard error over samples) for every per-sample curve.
+``{name}_sem`` (standard error over samples, :mod:`~randmedia.describe.averages`)
+for every per-sample curve.
 
 Every function takes configurations as (positions, box, diameter) triples in
 units of D; Monte Carlo estimators take one numpy Generator per sample.
+
+Why here and not in :mod:`randmedia.describe`: describe/ holds estimators any
+configuration or paper can use. This module is the paper's protocol -- its four
+descriptor kinds and the config sections each reads, the paper's grids and table
+wavenumbers (Figs. 6, 9; Tables II-V), the seeds keyed by ``"mrj2016"``, the
+variable names :mod:`randmedia.compare.mrj2016` and :mod:`randmedia.plot.mrj2016`
+read -- the describe-stage counterpart of those two per-paper modules, run by the
+rules ``mrj2016_describe_chunk`` and ``mrj2016_describe``.
 """
 
 from __future__ import annotations
@@ -20,7 +30,7 @@ import numpy as np
 import xarray as xr
 
 from randmedia.describe import packings, points, spectral
-from randmedia.stats import standard_error
+from randmedia.describe.averages import nan_mean_sem
 
 #: variables of each kind that are averaged over samples (mean + SEM added by :func:`merge`)
 AVERAGED = {
@@ -383,29 +393,6 @@ def describe(kind: str, system: str, configs: Sequence, *, first: int, seed: int
 
 
 # --------------------------------------------------------------------------- merge
-
-
-def nan_mean_sem(values):
-    """Mean and standard error over axis 0 ignoring NaN (e.g. a k bin empty in some cells);
-    the SEM is NaN where fewer than two samples have a value. Without NaN this is
-    exactly the mean and :func:`randmedia.stats.standard_error`."""
-    values = np.asarray(values, dtype=float)
-    valid = np.isfinite(values)
-    if valid.all():
-        return values.mean(axis=0), standard_error(values, axis=0)
-    count = valid.sum(axis=0)
-    filled = np.where(valid, values, 0.0)
-    with np.errstate(invalid="ignore", divide="ignore"):
-        mean = filled.sum(axis=0) / count
-        var = (np.where(valid, values - mean, 0.0) ** 2).sum(axis=0) / (count - 1)
-        sem = np.sqrt(var / count)
-    sem = np.where(count >= 2, sem, np.nan)
-    # +-inf (e.g. F_ss at r = 0) stays as the mean where all samples agree
-    infinite = np.isinf(values).all(axis=0) & (np.sign(values) == np.sign(values[:1])).all(axis=0)
-    mean = np.where(infinite, values[0] if values.shape[0] else np.nan, mean)
-    sem = np.where(infinite, 0.0, sem)
-    return mean, sem
-
 
 
 def merge(chunks: Iterable[xr.Dataset]) -> xr.Dataset:
