@@ -47,3 +47,29 @@ def test_overlapping_spheres_sample():
     assert np.all((x >= 0) & (x < box[0, 0]))
     x2, _ = spheres.overlapping_spheres(np.random.default_rng(0), 0.636, 1000)
     np.testing.assert_array_equal(x, x2)
+
+
+def test_binning_systematic_uses_only_conventions_consistent_with_the_paper():
+    """Away from the zeros of m(k) a convention must agree with the published values (median
+    deviation <= k_sigma errors); each row's margin is the largest shift a consistent convention
+    makes from ours -- large at a zero, zero elsewhere if the conventions agree there."""
+    import pandas as pd
+
+    from randmedia.compare.mrj2016 import BINNING_PREFIX, binning_systematic
+
+    kD = np.array([7.9, 8.5, 9.1, 9.7, 10.2])  # 9.1 is next to the zero 8.987
+    published = pd.DataFrame({"kD": kD.astype(str), "chiV_over_D3": [1.0, 0.5, 0.01, 0.3, 0.6],
+                              "sem_over_D3": 0.01})
+    ours = pd.DataFrame({"kD": kD, "chiV_over_D3": [1.0, 0.5, 0.005, 0.3, 0.6], "sem_over_D3": 0.01})
+    for name, values in (("bin_width", [1.0, 0.5, 0.005, 0.3, 0.6]),     # ours
+                         ("wide", [1.01, 0.49, 0.012, 0.31, 0.6]),       # consistent, differs at the zero
+                         ("shifted", [1.3, 0.8, 0.2, 0.6, 0.9]),         # inconsistent everywhere
+                         ("absent", [np.nan] * 5)):                      # does not apply
+        ours[f"{BINNING_PREFIX}{name}_over_D3"] = values
+        ours[f"{BINNING_PREFIX}{name}_sem_over_D3"] = 0.01
+    margin, consistent = binning_systematic(ours, published, k_sigma=3.0)
+    assert consistent == ["bin_width", "wide"]
+    np.testing.assert_allclose(margin, [0.01, 0.01, 0.007, 0.01, 0.0], atol=1e-12)
+    # without other conventions: no margin
+    margin, consistent = binning_systematic(ours[["kD", "chiV_over_D3", "sem_over_D3"]], published, 3.0)
+    assert consistent == [] and (margin == 0).all()

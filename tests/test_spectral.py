@@ -133,3 +133,60 @@ def test_table_iv_labels_are_the_shells_of_the_liquid_cell():
     assert not spectral.snap_to_shells(table5, np.eye(3) * 20.2)[1]
     assert not spectral.snap_to_shells(table4, np.eye(3) * 8.2)[1]  # another cell size
     assert not spectral.snap_to_shells(table4, np.diag([side, side, side + 1]))[1]  # not cubic
+
+
+def test_table_binnings_of_the_liquid_cell():
+    """The readings of Table IV's bins: ours, the single shell |n| = 2m (exactly the wavevectors
+    with |n|^2 = 4 m^2), one grid spacing, contiguous bins of the table spacing, the labels."""
+    side = 22.2
+    labels = np.array([0.6, 1.1, 1.7])
+    centres, snapped = spectral.snap_to_shells(labels, np.eye(3) * side)
+    assert snapped
+    binnings = spectral.table_binnings(labels, centres, np.eye(3) * side, 0.133)
+    assert tuple(binnings) == spectral.TABLE_BINNINGS
+    grid = 2 * math.pi / side
+    assert binnings["grid_spacing"][1] == pytest.approx(grid)
+    assert binnings["table_spacing"][1] == pytest.approx(2 * grid)
+    np.testing.assert_array_equal(binnings["labels"][0], labels)
+    # wavevectors of the cube (half space is irrelevant here: count both signs) and a value per vector
+    n = np.array(list(itertools.product(range(-7, 8), repeat=3)), dtype=float)
+    kmag = grid * np.linalg.norm(n, axis=1)
+    values = (n ** 2).sum(axis=1)  # |n|^2, so each bin mean tells which shells it took
+    means, counts = spectral.binned_table_values(kmag, values, binnings)
+    single = list(binnings).index("single_shell")
+    for m in (1, 2, 3):
+        assert counts[single, m - 1] == np.sum(values == 4 * m * m)
+        assert means[single, m - 1] == 4 * m * m
+    tiling = list(binnings).index("table_spacing")
+    # contiguous bins: |n| in [2m - 1, 2m + 1)
+    for m in (1, 2, 3):
+        norm = np.sqrt(values)
+        assert counts[tiling, m - 1] == np.sum((norm >= 2 * m - 1 - 1e-9) & (norm < 2 * m + 1 - 1e-9))
+    # on a cell whose shells the centres are not, single_shell does not apply
+    other = spectral.table_binnings(labels, labels, np.eye(3) * 20.0, 0.133)
+    assert np.isnan(other["single_shell"][0]).all() and np.isnan(other["labels"][0]).all()
+    means, counts = spectral.binned_table_values(kmag, values, other)
+    assert np.isnan(means[list(other).index("single_shell")]).all()
+    assert (counts[list(other).index("labels")] == 0).all()
+
+
+def test_spectral_samples_record_every_binning_and_ours_is_the_table():
+    """The table's own bins (bin_width) are chi_table exactly; each convention is stored with
+    its wavevector counts and widths (studies.mrj2016.spectral_samples)."""
+    from randmedia.studies.mrj2016 import spectral_samples
+
+    side = 6.0
+    box = np.eye(3) * side
+    rng = np.random.default_rng(5)
+    configs = [(rsa_packing(rng, box, 60), box, 1.0) for _ in range(2)]
+    labels = np.round(np.arange(1, 6) * 4 * math.pi / side, 1)
+    ds = spectral_samples(configs, k_max=12.0, bin_width=0.2, table_k=labels, table_width=0.2, snap_table=True)
+    assert ds.attrs["table_bins"].startswith("cubic-cell shells")
+    assert list(ds["binning"].values) == list(spectral.TABLE_BINNINGS)
+    np.testing.assert_array_equal(ds["chi_table_binning"].sel(binning="bin_width").values, ds["chi_table"].values)
+    widths = ds["binning_width"].isel(sample=0)
+    assert widths.sel(binning="grid_spacing") == pytest.approx(2 * math.pi / side)
+    counts = ds["binning_count"].isel(sample=0)
+    # the contiguous bins hold every wavevector from half a spacing below the first shell on
+    assert (counts.sel(binning="table_spacing") >= counts.sel(binning="grid_spacing")).all()
+    assert (counts.sel(binning="single_shell") > 0).all()

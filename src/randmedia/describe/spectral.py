@@ -222,6 +222,70 @@ def snap_to_shells(labels, box, step: int = 2):
     return labels, False
 
 
+#: the bin conventions of :func:`table_binnings`, in this order (the first is the table's own)
+TABLE_BINNINGS = ("bin_width", "single_shell", "grid_spacing", "table_spacing", "labels")
+
+
+def table_binnings(labels, centres, box, bin_width: float) -> dict[str, tuple[np.ndarray, float]]:
+    """Plausible readings of "chi_V at the tabulated kD", as {name: (bin centres, width)}.
+
+    A table that lists chi_V(k) at wavenumbers k_i without saying how its values were binned
+    (Klatt & Torquato, Tables IV, V) can mean any of these means over the allowed wavevectors;
+    they differ most next to the zeros of the form factor m(k), where chi_V varies by orders
+    of magnitude within a bin. ``centres`` are our bin centres for the ``labels`` (the printed
+    kD, or the cubic-cell shells they round, :func:`snap_to_shells`); ``box`` the cell.
+
+    * ``bin_width``: width ``bin_width`` centred on ``centres`` (the table's own row);
+    * ``single_shell``: only the wavevectors with |k| equal to the centre (width 10^-3 of the
+      grid spacing; a cubic cell's |k| = (2 pi / L) |n| with integer |n|^2, so this is the one
+      shell |n| = centre L / 2 pi) -- NaN centres unless the centres are such shells;
+    * ``grid_spacing``: width 2 pi / L (L the cube root of the cell volume);
+    * ``table_spacing``: contiguous bins tiling k, edges halfway between neighbouring centres
+      (and half a spacing beyond the first and last), each bin [lower, upper) with a shell on
+      an edge counted in the bin above (edges lowered by 10^-9 relative: on a cubic cell the
+      edges of Table IV's bins fall on the shells |n| = 2m + 1 exactly);
+    * ``labels``: width ``bin_width`` centred on the printed ``labels`` (NaN if they are the
+      centres).
+    NaN centres mean the convention does not apply (its means are NaN).
+    """
+    labels = np.asarray(labels, dtype=float)
+    centres = np.asarray(centres, dtype=float)
+    cell_box = Cell(box).box
+    grid = 2.0 * math.pi / abs(np.linalg.det(cell_box)) ** (1.0 / len(cell_box))
+    n_shell = centres / grid
+    on_shells = bool(np.allclose(n_shell ** 2, np.round(n_shell ** 2), atol=1e-6))
+    spacing = float(np.min(np.diff(centres))) if centres.size > 1 else grid
+    nan = np.full_like(centres, np.nan)
+    return {
+        "bin_width": (centres, float(bin_width)),
+        "single_shell": (centres if on_shells else nan, 1e-3 * grid),
+        "grid_spacing": (centres, grid),
+        "table_spacing": (centres, spacing),
+        "labels": (nan if np.allclose(labels, centres) else labels, float(bin_width)),
+    }
+
+
+def binned_table_values(kmag, values, binnings: dict[str, tuple[np.ndarray, float]]):
+    """(means, counts), each (len(binnings), n_centres): :func:`centred_bin_means` of ``values``
+    under each convention of :func:`table_binnings` (NaN mean, zero count where it does not
+    apply)."""
+    means, counts = [], []
+    for name, (centres, width) in binnings.items():
+        if np.isnan(centres).all():
+            means.append(np.full(centres.shape, np.nan)), counts.append(np.zeros(centres.shape))
+            continue
+        if name == "table_spacing":
+            middle = 0.5 * (centres[1:] + centres[:-1])
+            edges = np.concatenate([[centres[0] - (middle[0] - centres[0]) if middle.size else centres[0] - width / 2],
+                                    middle,
+                                    [centres[-1] + (centres[-1] - middle[-1]) if middle.size else centres[-1] + width / 2]])
+            mean, count, _ = bin_means(kmag, values, edges * (1.0 - 1e-9))
+        else:
+            mean, count, _ = centred_bin_means(kmag, values, centres, width)
+        means.append(mean), counts.append(count)
+    return np.array(means), np.array(counts)
+
+
 # --------------------------------------------------------------------------- Eq. (11)
 
 

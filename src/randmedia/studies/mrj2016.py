@@ -36,7 +36,7 @@ from randmedia.describe.averages import nan_mean_sem
 AVERAGED = {
     "correlation": packings.CORRELATION_VARIABLES + ("F_sv_over_s", "F_ss_over_s2",
                                                    "F_sv_two_body_over_s", "F_ss_two_body_over_s2"),
-    "spectral": ("chi", "S", "chi_table"),
+    "spectral": ("chi", "S", "chi_table", "chi_table_binning"),
     "points": ("E_V", "F"),
 }
 
@@ -176,6 +176,7 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
             raise ValueError("samples of one system have different cells: cannot snap the table's kD")
     table_width = bin_width if table_width is None else table_width
     chi, S, counts, kmean, chi_table, table_counts = [], [], [], [], [], []
+    chi_binnings, binning_counts, binning_widths = [], [], []
     bragg_rows = []
     for positions, box, diameter in configs:
         _, _, kmag, Sk = spectral.structure_factor(positions, box, k_max, eps=eps, nthreads=nthreads)
@@ -187,6 +188,10 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
         if table_k.size:
             t, c, _ = spectral.centred_bin_means(kmag, chik, table_k, table_width)
             chi_table.append(t), table_counts.append(c)
+            binnings = spectral.table_binnings(table_labels, table_k, box, table_width)
+            means, numbers = spectral.binned_table_values(kmag, chik, binnings)
+            chi_binnings.append(means), binning_counts.append(numbers)
+            binning_widths.append([width for _, width in binnings.values()])
         n = len(positions)
         peaks = Sk > 0.5 * n
         bragg_rows.append((peaks.sum(), Sk[peaks].min() / n if peaks.any() else np.nan,
@@ -212,6 +217,15 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
         coords["k_table"] = ("k_table", table_labels, _meta("1/D", "tabulated kD of the paper"))
         data["k_table_centre"] = (("k_table",), table_k,
                                   _meta("1/D", "centre of our bin for the tabulated kD"))
+        data["chi_table_binning"] = (("sample", "binning", "k_table"), np.array(chi_binnings),
+                                     _meta("D^3", "spectral density at the tabulated kD under each bin "
+                                                  "convention (spectral.table_binnings; NaN: not applicable)"))
+        data["binning_count"] = (("sample", "binning", "k_table"), np.array(binning_counts),
+                                 _meta("1", "wavevectors in the bin of each convention"))
+        data["binning_width"] = (("sample", "binning"), np.array(binning_widths),
+                                 _meta("1/D", "bin width of each convention"))
+        coords["binning"] = ("binning", list(spectral.TABLE_BINNINGS),
+                             _meta("1", "bin convention for the tabulated kD (spectral.table_binnings)"))
     data.update(_scalars(configs))
     attrs = {"kind": "spectral", "k_max": float(k_max), "bin_width": float(bin_width),
              "table_width": float(table_width), "nufft_eps": float(eps),
