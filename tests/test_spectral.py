@@ -190,3 +190,13 @@ def test_spectral_samples_record_every_binning_and_ours_is_the_table():
     # the contiguous bins hold every wavevector from half a spacing below the first shell on
     assert (counts.sel(binning="table_spacing") >= counts.sel(binning="grid_spacing")).all()
     assert (counts.sel(binning="single_shell") > 0).all()
+
+
+def test_table_binnings_of_a_cell_smaller_than_the_table_spacing():
+    """Table V's 0.6 m on a cell of 5 D: one grid spacing (1.26/D) would overlap neighbours."""
+    labels = np.arange(1, 6) * 0.6
+    binnings = spectral.table_binnings(labels, labels, np.eye(3) * 5.0, 0.133)
+    assert np.isnan(binnings["grid_spacing"][0]).all()
+    assert not np.isnan(binnings["table_spacing"][0]).any()
+    means, counts = spectral.binned_table_values(np.array([0.6, 1.2]), np.array([1.0, 2.0]), binnings)
+    assert means[list(binnings).index("bin_width")].tolist()[:2] == [1.0, 2.0]

@@ -239,7 +239,8 @@ def table_binnings(labels, centres, box, bin_width: float) -> dict[str, tuple[np
     * ``single_shell``: only the wavevectors with |k| equal to the centre (width 10^-3 of the
       grid spacing; a cubic cell's |k| = (2 pi / L) |n| with integer |n|^2, so this is the one
       shell |n| = centre L / 2 pi) -- NaN centres unless the centres are such shells;
-    * ``grid_spacing``: width 2 pi / L (L the cube root of the cell volume);
+    * ``grid_spacing``: width 2 pi / L (L the cube root of the cell volume; NaN centres if
+      that is wider than the spacing of the centres);
     * ``table_spacing``: contiguous bins tiling k, edges halfway between neighbouring centres
       (and half a spacing beyond the first and last), each bin [lower, upper) with a shell on
       an edge counted in the bin above (edges lowered by 10^-9 relative: on a cubic cell the
@@ -259,7 +260,8 @@ def table_binnings(labels, centres, box, bin_width: float) -> dict[str, tuple[np
     return {
         "bin_width": (centres, float(bin_width)),
         "single_shell": (centres if on_shells else nan, 1e-3 * grid),
-        "grid_spacing": (centres, grid),
+        # bins wider than the spacing of the centres would overlap (a small cell): not applicable
+        "grid_spacing": (centres if grid <= spacing + 1e-12 else nan, grid),
         "table_spacing": (centres, spacing),
         "labels": (nan if np.allclose(labels, centres) else labels, float(bin_width)),
     }
