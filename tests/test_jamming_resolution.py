@@ -18,6 +18,9 @@ def test_expanded_fcc_is_certified_once_its_gaps_count_as_contacts():
     positions, box = bond_order.cubic_lattice("fcc", 2)
     factor = 1 + 3e-8
     assert certified_gap_tolerance(positions * factor, box * factor) == pytest.approx(1e-7)
+    # the ladder may start above the configured tolerance when the caller knows it fails there
+    assert certified_gap_tolerance(positions * factor, box * factor, first_rung=1) == pytest.approx(1e-7)
+    assert certified_gap_tolerance(positions * factor, box * factor, first_rung=3) == pytest.approx(1e-6)
 
 
 def test_simple_cubic_is_never_certified():

@@ -23,16 +23,18 @@ from randmedia.describe.jamming import analyse
 
 def certified_gap_tolerance(positions, box, diameter: float = 1.0, *,
                             gap_tolerance: float = 1e-9, max_tolerance: float = 1e-4,
-                            **analyse_options) -> float:
+                            first_rung: int = 0, **analyse_options) -> float:
     """The smallest ``gap_tolerance x 10^m <= max_tolerance`` at which
     :func:`~randmedia.describe.jamming.analyse` reports the packing strictly jammed
     (module docstring), NaN if none; ``analyse_options`` (rank, force and motion
-    tolerances) are passed on unchanged."""
+    tolerances) are passed on unchanged. ``first_rung``: the first m tried (1 when the
+    caller already knows the test fails at ``gap_tolerance``, e.g. from the packing's
+    stored ``jammed`` attribute)."""
     if not 0 < gap_tolerance <= max_tolerance < 0.1:
         raise ValueError(f"need 0 < gap_tolerance ({gap_tolerance}) <= max_tolerance "
                          f"({max_tolerance}) < 0.1 D")
     steps = int(math.floor(math.log10(max_tolerance / gap_tolerance) + 1e-9))
-    for m in range(steps + 1):
+    for m in range(first_rung, steps + 1):
         tolerance = gap_tolerance * 10.0 ** m
         if analyse(positions, box, diameter, gap_tolerance=tolerance, **analyse_options).jammed:
             return tolerance

@@ -16,8 +16,12 @@ contacts = dict(snakemake.params.contacts)
 records = []
 for path in snakemake.input.samples:
     dataset = read_dataset(path, attrs=PACKING_ATTRS + ("diameter",))
-    certified = certified_gap_tolerance(dataset["position"].values, dataset["box"].values,
-                                        float(dataset.attrs["diameter"]), **contacts)
+    # the packing rule stored the test at the configured tolerance (same contact options) as `jammed`
+    if dataset.attrs["jammed"]:
+        certified = contacts["gap_tolerance"]
+    else:
+        certified = certified_gap_tolerance(dataset["position"].values, dataset["box"].values,
+                                            float(dataset.attrs["diameter"]), first_rung=1, **contacts)
     log.info("%s: jammed at gap tolerance %g: %d; certified from %g", path,
              contacts["gap_tolerance"], dataset.attrs["jammed"], certified)
     records.append({"file": str(path), **{key: dataset.attrs[key] for key in PACKING_ATTRS},
