@@ -35,6 +35,7 @@ include: "workflow/rules/mrj2016_jammed.smk"
 include: "workflow/rules/mrj2016.smk"
 include: "workflow/rules/sphere2019.smk"
 include: "workflow/rules/report.smk"
+include: "workflow/rules/record.smk"
 
 
 rule all:

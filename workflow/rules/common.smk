@@ -230,3 +230,21 @@ def sphere_figure(number, second_reading=False, in_report=False):
 
 def sphere_descriptors(systems):
     return expand(SPHERE_DESCRIPTOR, system=systems)
+
+
+# --------------------------------------------------------------------------- record (record.smk)
+
+from randmedia.config import load_config as _load_config
+from randmedia.record import paper_config as _paper_config
+
+#: the paper-fidelity configuration (config/config.yaml alone, defaults filled in)
+_PAPER_CONFIG = _load_config(Path(workflow.basedir) / "config" / "config.yaml")
+validate_config(_PAPER_CONFIG, Path(workflow.basedir) / "workflow" / "schemas" / "config.schema.yaml")
+
+
+def record_root(paper):
+    """record/ when the run's configuration of ``paper`` is the paper's own (its section,
+    seed, comparison as in config/config.yaml), results/record/ otherwise: a quick or
+    extended run never overwrites the committed record."""
+    same = _paper_config(config, paper) == _paper_config(_PAPER_CONFIG, paper)
+    return "record" if same else "results/record"
