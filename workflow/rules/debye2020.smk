@@ -8,6 +8,11 @@
 #   exact Eqs. 32-39) and equilibrium hard disks (images from debye2020_hard_disks.smk,
 #   included before this file) -> Figs. 8-12;
 # * tables/numbers.csv, comparison.csv and comparison_notes.csv.
+#
+# Every figure rule (Figs. 1-12 and the two validation figures) runs
+# ../scripts/debye2020/figure.py: params.figure selects the function of
+# randmedia.plot.debye2020.FIGURES (figNN draws Fig. NN), params.settings holds the
+# config values it reads (convention: randmedia.plot.rule).
 
 import re
 
@@ -75,34 +80,36 @@ rule debye2020_fig01:
     """Fig. 1: one construction per volume fraction."""
     input:
         samples=expand(MEDIA_SAMPLE, phi2=MEDIA_PHI2, k=0),
-        code=script_sources("../scripts/debye2020/fig01.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(1, in_report=True),
     params:
-        a=MEDIA["a"],
+        figure=1,
+        settings={"a": MEDIA["a"]},
     benchmark:
         "results/debye2020/benchmarks/fig01.tsv"
     log:
         "results/debye2020/logs/fig01.log",
     script:
-        "../scripts/debye2020/fig01.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_fig02:
     """Fig. 2: S2 of the constructions against the targets."""
     input:
         s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
-        code=script_sources("../scripts/debye2020/fig02.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(2, in_report=True),
     params:
-        lc=MEDIA["lc"],
+        figure=2,
+        settings={"lc": MEDIA["lc"]},
     benchmark:
         "results/debye2020/benchmarks/fig02.tsv"
     log:
         "results/debye2020/logs/fig02.log",
     script:
-        "../scripts/debye2020/fig02.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_media_chords:
@@ -150,18 +157,18 @@ rule debye2020_fig06:
     input:
         chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
         fits=LINEAL_FITS,
-        code=script_sources("../scripts/debye2020/fig06_07.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(6, in_report=True),
     params:
-        a=MEDIA["a"],
-        figure="fig06_lineal_path",
+        figure=6,
+        settings={"a": MEDIA["a"]},
     benchmark:
         "results/debye2020/benchmarks/fig06.tsv"
     log:
         "results/debye2020/logs/fig06.log",
     script:
-        "../scripts/debye2020/fig06_07.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_fig07:
@@ -169,18 +176,18 @@ rule debye2020_fig07:
     input:
         chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
         fits=LINEAL_FITS,
-        code=script_sources("../scripts/debye2020/fig06_07.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(7, in_report=True),
     params:
-        a=MEDIA["a"],
-        figure="fig07_chord_density",
+        figure=7,
+        settings={"a": MEDIA["a"]},
     benchmark:
         "results/debye2020/benchmarks/fig07.tsv"
     log:
         "results/debye2020/logs/fig07.log",
     script:
-        "../scripts/debye2020/fig06_07.py"
+        "../scripts/debye2020/figure.py"
 
 
 DISKS = config["debye2020"]["overlapping_disks"]
@@ -233,21 +240,21 @@ rule debye2020_overlapping_disks_figure:
     """Validation figure: simulated S2 against the exact Eqs. (32)-(33)."""
     input:
         s2=DISKS_S2,
-        code=script_sources("../scripts/debye2020/overlapping_disks_figure.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         pdf=DISKS_FIGURE,
         png=report_validation_figure(DISKS_FIGURE.replace(".pdf", ".png"), "debye2020",
                                      "validation_overlapping_disks_s2.rst"),
     params:
-        radius=DISKS["radius"],
-        phi2=DISKS["phi2"],
-        compare_r_max=DISKS["compare_r_max_over_R"] * DISKS["radius"],
+        figure="overlapping_disks_s2",
+        settings={"radius": DISKS["radius"], "phi2": DISKS["phi2"],
+                  "compare_r_max": DISKS["compare_r_max_over_R"] * DISKS["radius"]},
     benchmark:
         "results/debye2020/benchmarks/overlapping_disks_figure.tsv"
     log:
         "results/debye2020/logs/overlapping_disks_figure.log",
     script:
-        "../scripts/debye2020/overlapping_disks_figure.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_overlapping_disks_chords:
@@ -408,36 +415,36 @@ rule debye2020_fig03:
     """Fig. 3: F_sv of the Debye media per phi2, with Eq. (24)."""
     input:
         surface=[files["surface"] for files in MEDIA_LEVEL_SET],
-        code=script_sources("../scripts/debye2020/fig03_04.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(3, in_report=True),
     params:
-        a=MEDIA["a"],
-        figure="fig03_surface_void",
+        figure=3,
+        settings={"a": MEDIA["a"]},
     benchmark:
         "results/debye2020/benchmarks/fig03.tsv"
     log:
         "results/debye2020/logs/fig03.log",
     script:
-        "../scripts/debye2020/fig03_04.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_fig04:
     """Fig. 4: F_ss of the Debye media per phi2, with Eq. (26)."""
     input:
         surface=[files["surface"] for files in MEDIA_LEVEL_SET],
-        code=script_sources("../scripts/debye2020/fig03_04.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(4, in_report=True),
     params:
-        a=MEDIA["a"],
-        figure="fig04_surface_surface",
+        figure=4,
+        settings={"a": MEDIA["a"]},
     benchmark:
         "results/debye2020/benchmarks/fig04.tsv"
     log:
         "results/debye2020/logs/fig04.log",
     script:
-        "../scripts/debye2020/fig03_04.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_fig05:
@@ -445,34 +452,36 @@ rule debye2020_fig05:
     input:
         pores=[files["pores"] for files in MEDIA_LEVEL_SET],
         fits=SURFACE_PORE_FITS,
-        code=script_sources("../scripts/debye2020/fig05.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(5, in_report=True),
     params:
-        a=MEDIA["a"],
+        figure=5,
+        settings={"a": MEDIA["a"]},
     benchmark:
         "results/debye2020/benchmarks/fig05.tsv"
     log:
         "results/debye2020/logs/fig05.log",
     script:
-        "../scripts/debye2020/fig05.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_fig08:
     """Fig. 8: one image of overlapping disks and one of equilibrium hard disks."""
     input:
         samples=[f"{DISKS_DIR}/sample0.nc", HARD_DISKS_SAMPLES[0]],
-        code=script_sources("../scripts/debye2020/fig08.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(8, in_report=True),
     params:
-        titles=["overlapping disks", "equilibrium hard disks"],
+        figure=8,
+        settings={"titles": ["overlapping disks", "equilibrium hard disks"]},
     benchmark:
         "results/debye2020/benchmarks/fig08.tsv"
     log:
         "results/debye2020/logs/fig08.log",
     script:
-        "../scripts/debye2020/fig08.py"
+        "../scripts/debye2020/figure.py"
 
 
 SECTION6_PARAMS = {"a": MEDIA["a"], "radius": DISKS["radius"], "phi2": DISKS["phi2"]}
@@ -482,92 +491,92 @@ rule debye2020_fig09:
     """Fig. 9: chi_V, F_sv, F_ss of the three models at the comparison phi2, against r s."""
     input:
         **section6_inputs(9),
-        code=script_sources("../scripts/debye2020/section6.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(9, in_report=True),
     params:
-        number=9,
-        **SECTION6_PARAMS,
+        figure=9,
+        settings=SECTION6_PARAMS,
     benchmark:
         "results/debye2020/benchmarks/fig09.tsv"
     log:
         "results/debye2020/logs/fig09.log",
     script:
-        "../scripts/debye2020/section6.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_fig10:
     """Fig. 10: P(delta) of the three models, against delta s."""
     input:
         **section6_inputs(10),
-        code=script_sources("../scripts/debye2020/section6.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(10, in_report=True),
     params:
-        number=10,
-        **SECTION6_PARAMS,
+        figure=10,
+        settings=SECTION6_PARAMS,
     benchmark:
         "results/debye2020/benchmarks/fig10.tsv"
     log:
         "results/debye2020/logs/fig10.log",
     script:
-        "../scripts/debye2020/section6.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_fig11:
     """Fig. 11: L(z) of the three models, against z s."""
     input:
         **section6_inputs(11),
-        code=script_sources("../scripts/debye2020/section6.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(11, in_report=True),
     params:
-        number=11,
-        **SECTION6_PARAMS,
+        figure=11,
+        settings=SECTION6_PARAMS,
     benchmark:
         "results/debye2020/benchmarks/fig11.tsv"
     log:
         "results/debye2020/logs/fig11.log",
     script:
-        "../scripts/debye2020/section6.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_fig12:
     """Fig. 12: p(z) of the three models, against z s."""
     input:
         **section6_inputs(12),
-        code=script_sources("../scripts/debye2020/section6.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         **figure_outputs(12, in_report=True),
     params:
-        number=12,
-        **SECTION6_PARAMS,
+        figure=12,
+        settings=SECTION6_PARAMS,
     benchmark:
         "results/debye2020/benchmarks/fig12.tsv"
     log:
         "results/debye2020/logs/fig12.log",
     script:
-        "../scripts/debye2020/section6.py"
+        "../scripts/debye2020/figure.py"
 
 
 rule debye2020_overlapping_disks_level_set_figure:
     """Validation figure: level-set F_sv, F_ss, F, P of overlapping disks against Eqs. (35)-(37)."""
     input:
         **level_set_files(DISKS_SYSTEM),
-        code=script_sources("../scripts/debye2020/validation_level_set.py"),
+        code=script_sources("../scripts/debye2020/figure.py"),
     output:
         pdf=LEVEL_SET_FIGURE,
         png=report_validation_figure(LEVEL_SET_FIGURE.replace(".pdf", ".png"), "debye2020",
                                      "validation_overlapping_disks_level_set.rst"),
     params:
-        radius=DISKS["radius"],
-        phi2=DISKS["phi2"],
+        figure="overlapping_disks_level_set",
+        settings={"radius": DISKS["radius"], "phi2": DISKS["phi2"]},
     benchmark:
         "results/debye2020/benchmarks/overlapping_disks_level_set_figure.tsv"
     log:
         "results/debye2020/logs/overlapping_disks_level_set_figure.log",
     script:
-        "../scripts/debye2020/validation_level_set.py"
+        "../scripts/debye2020/figure.py"
 
 
 DEBYE2020_TARGETS = HARD_DISKS_TARGETS + [

@@ -7,7 +7,10 @@
 #   describe  per chunk of samples: correlation (Appendix A), spectral (Sec. IV),
 #             points (pore sizes, E_V, covering radius; Sec. V), windows (number
 #             variance, f_R(N); Sec. VI); then one merged file per system and kind.
-#   render    Figs. 1-13, Tables I-V, comparison.csv (+ comparison_notes.csv).
+#   render    Figs. 1-13, Tables I-V, comparison.csv (+ comparison_notes.csv). The figure
+#             rule runs ../scripts/mrj2016/figure.py: params.figure selects the function
+#             of randmedia.plot.mrj2016.FIGURES (figNN draws Fig. NN), params.settings
+#             holds the config values it reads (convention: randmedia.plot.rule).
 #
 # A system with no samples in the config is left out of every descriptor, figure
 # and table that would use it.
@@ -210,6 +213,7 @@ rule mrj2016_figure:
         png=report("results/mrj2016/figures/fig{nn}.png", caption="../report/mrj2016/figures.rst",
                    category="mrj2016", subcategory="Fig. {nn}"),
     params:
+        figure=lambda wildcards: int(wildcards.nn),
         settings=lambda wildcards: M_FIGURE_PARAMS[int(wildcards.nn)],
     benchmark:
         "results/mrj2016/benchmarks/fig{nn}.tsv"

@@ -7,7 +7,10 @@
 #           the paper's three orthogonal origins per sweep), geodesic g2, sigma^2
 #           from g2 by Eq. (4)/(5) -> results/sphere2019/descriptors/{system}.nc
 # fit:      exponents delta of sigma^2 ~ a^delta -> results/sphere2019/fits/exponents.nc
-# render:   Table I, comparison.csv (+ comparison_notes.csv), Monte Carlo run summary, Figs. 1-8.
+# render:   Table I, comparison.csv (+ comparison_notes.csv), Monte Carlo run summary, Figs. 1-8;
+#           every figure rule runs ../scripts/sphere2019/figure.py: params.figure selects the
+#           function of randmedia.plot.sphere2019.FIGURES (figNN draws Fig. NN),
+#           params.settings holds the config values it reads (convention: randmedia.plot.rule).
 
 SPHERE = config["sphere2019"]
 SPHERE_PATTERNS = SPHERE["patterns"]
@@ -171,15 +174,17 @@ rule sphere2019_comparison:
 rule sphere2019_fig01:
     """Fig. 1: the spherical-cap window."""
     input:
-        code=script_sources("../scripts/sphere2019/fig01.py"),
+        code=script_sources("../scripts/sphere2019/figure.py"),
     output:
         **sphere_figure(1, in_report=True),
+    params:
+        figure=1,
     benchmark:
         "results/sphere2019/benchmarks/fig01.tsv"
     log:
         "results/sphere2019/logs/fig01.log",
     script:
-        "../scripts/sphere2019/fig01.py"
+        "../scripts/sphere2019/figure.py"
 
 
 rule sphere2019_fig02:
@@ -187,15 +192,17 @@ rule sphere2019_fig02:
     input:
         configs=expand(SPHERE_CONFIG, system=["icosahedral", "fibonacci"]),
         descriptors=sphere_descriptors(["icosahedral", "fibonacci"]),
-        code=script_sources("../scripts/sphere2019/fig02.py"),
+        code=script_sources("../scripts/sphere2019/figure.py"),
     output:
         **sphere_figure(2, in_report=True),
+    params:
+        figure=2,
     benchmark:
         "results/sphere2019/benchmarks/fig02.tsv"
     log:
         "results/sphere2019/logs/fig02.log",
     script:
-        "../scripts/sphere2019/fig02.py"
+        "../scripts/sphere2019/figure.py"
 
 
 rule sphere2019_fig03:
@@ -203,33 +210,35 @@ rule sphere2019_fig03:
     input:
         configs=expand(SPHERE_CONFIG, system=["poisson", "uniform"]),
         descriptors=sphere_descriptors(["poisson", "uniform"]),
-        code=script_sources("../scripts/sphere2019/fig03.py"),
+        code=script_sources("../scripts/sphere2019/figure.py"),
     output:
         **sphere_figure(3, in_report=True),
+    params:
+        figure=3,
     benchmark:
         "results/sphere2019/benchmarks/fig03.tsv"
     log:
         "results/sphere2019/logs/fig03.log",
     script:
-        "../scripts/sphere2019/fig03.py"
+        "../scripts/sphere2019/figure.py"
 
 
 rule sphere2019_fig04:
     """Fig. 4: scaled number variance of the R = 15 fluids (inset: sigma^2*(a))."""
     input:
         descriptors=sphere_descriptors(SPHERE_R15),
-        code=script_sources("../scripts/sphere2019/fluid_figure.py"),
+        code=script_sources("../scripts/sphere2019/figure.py"),
     output:
         **sphere_figure(4, in_report=True),
     params:
-        figure="fig04_fluids",
-        a_min=SPHERE_A_MIN_PLOT,
+        figure=4,
+        settings={"a_min": SPHERE_A_MIN_PLOT},
     benchmark:
         "results/sphere2019/benchmarks/fig04.tsv"
     log:
         "results/sphere2019/logs/fig04.log",
     script:
-        "../scripts/sphere2019/fluid_figure.py"
+        "../scripts/sphere2019/figure.py"
 
 
 rule sphere2019_fig05:
@@ -237,18 +246,18 @@ rule sphere2019_fig05:
     input:
         descriptors=sphere_descriptors(SPHERE_ALPHA),
         alpha_cubed=sphere_descriptors(SPHERE_ALPHA_CUBED),
-        code=script_sources("../scripts/sphere2019/fluid_figure.py"),
+        code=script_sources("../scripts/sphere2019/figure.py"),
     output:
         **sphere_figure(5, second_reading=True, in_report=True),
     params:
-        figure="fig05_alpha",
-        a_min=SPHERE_A_MIN_PLOT,
+        figure=5,
+        settings={"a_min": SPHERE_A_MIN_PLOT},
     benchmark:
         "results/sphere2019/benchmarks/fig05.tsv"
     log:
         "results/sphere2019/logs/fig05.log",
     script:
-        "../scripts/sphere2019/fluid_figure.py"
+        "../scripts/sphere2019/figure.py"
 
 
 rule sphere2019_fig06:
@@ -256,15 +265,17 @@ rule sphere2019_fig06:
     input:
         configs=expand(SPHERE_CONFIG, system=SPHERE_ALPHA),
         alpha_cubed=expand(SPHERE_CONFIG, system=SPHERE_ALPHA_CUBED),
-        code=script_sources("../scripts/sphere2019/fig06.py"),
+        code=script_sources("../scripts/sphere2019/figure.py"),
     output:
         **sphere_figure(6, second_reading=True, in_report=True),
+    params:
+        figure=6,
     benchmark:
         "results/sphere2019/benchmarks/fig06.tsv"
     log:
         "results/sphere2019/logs/fig06.log",
     script:
-        "../scripts/sphere2019/fig06.py"
+        "../scripts/sphere2019/figure.py"
 
 
 rule sphere2019_fig07:
@@ -272,18 +283,17 @@ rule sphere2019_fig07:
     input:
         descriptors=sphere_descriptors(SPHERE_FIG08),
         alpha_cubed=sphere_descriptors(SPHERE_FIG08_CUBED),
-        code=script_sources("../scripts/sphere2019/fluid_figure.py"),
+        code=script_sources("../scripts/sphere2019/figure.py"),
     output:
         **sphere_figure(7, second_reading=True, in_report=True),
     params:
-        figure="fig07_g2",
-        a_min=0.0,
+        figure=7,
     benchmark:
         "results/sphere2019/benchmarks/fig07.tsv"
     log:
         "results/sphere2019/logs/fig07.log",
     script:
-        "../scripts/sphere2019/fluid_figure.py"
+        "../scripts/sphere2019/figure.py"
 
 
 rule sphere2019_fig08:
@@ -291,18 +301,17 @@ rule sphere2019_fig08:
     input:
         descriptors=sphere_descriptors(SPHERE_FIG08),
         alpha_cubed=sphere_descriptors(SPHERE_FIG08_CUBED),
-        code=script_sources("../scripts/sphere2019/fluid_figure.py"),
+        code=script_sources("../scripts/sphere2019/figure.py"),
     output:
         **sphere_figure(8, second_reading=True, in_report=True),
     params:
-        figure="fig08_from_g2",
-        a_min=0.0,
+        figure=8,
     benchmark:
         "results/sphere2019/benchmarks/fig08.tsv"
     log:
         "results/sphere2019/logs/fig08.log",
     script:
-        "../scripts/sphere2019/fluid_figure.py"
+        "../scripts/sphere2019/figure.py"
 
 
 SPHERE2019_FIGURES = [path for n in range(1, 9) for path in sphere_figure(n, n >= 5).values()]

@@ -1,22 +1,45 @@
-"""Figures of the debye2020 pipeline."""
+"""Figures 1-12 of Ma & Torquato, PRE 102, 043310 (2020), and two validation figures.
+
+:data:`FIGURES` (end of the module) maps each figure to its function: ``figNN(inputs,
+settings, log)`` reads the rule's input files (``inputs``: name -> path or list of paths),
+takes the config values it uses from ``settings`` and returns the matplotlib figure; the
+rules ``debye2020_figNN`` run it through ``workflow/scripts/debye2020/figure.py``
+(convention: :mod:`randmedia.plot.rule`). Validation figures beyond the paper are keyed by
+name: ``overlapping_disks_s2``, ``overlapping_disks_level_set``.
+"""
 
 from __future__ import annotations
 
 import numpy as np
-import xarray as xr
 
-from randmedia.plot.style import figure, save_figure
+from randmedia.describe.chords import CHORDS
+from randmedia.describe.pore_size import PORES
+from randmedia.describe.surface import SURFACE
+from randmedia.describe.two_phase import TWO_POINT
+from randmedia.generate import PHASE_IMAGE
+from randmedia.io import read_dataset
+from randmedia.plot.style import figure
 from randmedia.theory.overlapping import s2_void
 
 
-def overlapping_disks_s2(s2: xr.Dataset, *, radius: float, phi2: float, compare_r_max: float,
-                         pdf_path) -> None:
-    """Validation figure: simulated S2 of overlapping disks against Eqs. (32)-(33).
+def _by_phi2(paths, spec, attrs=("phi2",)) -> dict:
+    """{phi2: dataset} of files (images or descriptors) that each hold one volume fraction."""
+    found = {}
+    for path in paths:
+        ds = read_dataset(path, spec, attrs=list(attrs))
+        found[float(ds.attrs["phi2"])] = ds
+    return found
+
+
+def overlapping_disks_s2(inputs, settings, log):
+    """Validation figure: simulated S2 of overlapping disks (input ``s2``) against Eqs. (32)-(33).
 
     Top: S2^(1)(r) (mean +- SEM over samples) and the exact curve, with the
     long-range limit phi1^2. Bottom: deviation in units of the SEM, with the
     +-3 SEM band used by the comparison (up to ``compare_r_max``).
     """
+    s2 = read_dataset(inputs["s2"], TWO_POINT, attrs=["r_max", "bin_width"])
+    radius, phi2, compare_r_max = settings["radius"], settings["phi2"], settings["compare_r_max"]
     r = s2["r"].values
     x = r / radius
     fig, (top, bottom) = figure(nrows=2, ncols=1, aspect=0.55, sharex=True,
@@ -40,19 +63,22 @@ def overlapping_disks_s2(s2: xr.Dataset, *, radius: float, phi2: float, compare_
     bottom.set_xlabel(r"$r/R$")
     bottom.set_ylabel("(ours $-$ exact)/SEM")
     bottom.set_xlim(0, x.max())
-    save_figure(fig, pdf_path)
+    return fig
 
 
 #: phase 1 (void) dark, phase 2 (solid) yellow, as in the paper's Fig. 1
 PHASE_COLOURS = ("#3b0f70", "#fde725")
 
 
-def fig01_media(images_by_phi2: dict, *, a: float, pdf_path) -> None:
-    """Fig. 1: one construction per volume fraction, phase 2 (solid) in yellow."""
+def fig01(inputs, settings, log):
+    """Fig. 1: one construction per volume fraction (input ``samples``), phase 2 (solid) in yellow."""
     from matplotlib.colors import ListedColormap
 
     from randmedia.plot.style import PAGE_WIDTH
 
+    images_by_phi2 = {phi2: ds["phase"].values
+                      for phi2, ds in _by_phi2(inputs["samples"], PHASE_IMAGE).items()}
+    a = settings["a"]
     n = len(images_by_phi2)
     fig, axes = figure(ncols=n, nrows=1, width=PAGE_WIDTH, aspect=1.0)
     axes = np.atleast_1d(axes)
@@ -63,11 +89,14 @@ def fig01_media(images_by_phi2: dict, *, a: float, pdf_path) -> None:
         ax.set_yticks([])
         ax.set_title(rf"({label}) $\phi_2 = {phi2:g}$")
     axes[0].set_ylabel(rf"$N = {image.shape[0]}$, $a = {a:g}$ pixels")
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig02_s2(s2_by_phi2: dict, *, lc: float, pdf_path) -> None:
-    """Fig. 2: S2(r) of the constructions (dashed, mean over samples) and targets (solid)."""
+def fig02(inputs, settings, log):
+    """Fig. 2: S2(r) of the constructions (input ``s2``; dashed, mean over samples) and targets
+    (solid)."""
+    s2_by_phi2 = _by_phi2(inputs["s2"], TWO_POINT, attrs=("phi2", "a"))
+    lc = settings["lc"]
     fig, ax = figure()
     for i, (phi2, s2) in enumerate(sorted(s2_by_phi2.items(), reverse=True)):
         keep = s2["r"].values <= lc
@@ -82,11 +111,15 @@ def fig02_s2(s2_by_phi2: dict, *, lc: float, pdf_path) -> None:
     ax.set_xlim(0, lc)
     ax.set_ylim(0, None)
     ax.legend(loc="upper right", ncol=2)
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig06_lineal_path(chords_by_phi2: dict, fits, *, a: float, pdf_path) -> None:
-    """Fig. 6: (a) L(z) per phi2 with the fit of Eq. (29); (b) fitted L_w against phi2."""
+def fig06(inputs, settings, log):
+    """Fig. 6: (a) L(z) per phi2 (input ``chords``) with the fit of Eq. (29) (input ``fits``);
+    (b) fitted L_w against phi2."""
+    chords_by_phi2 = _by_phi2(inputs["chords"], CHORDS)
+    fits = read_dataset(inputs["fits"])
+    a = settings["a"]
     fig, (left, right) = figure(ncols=2, nrows=1, width=2 * 3.4, aspect=0.75)
     for i, (phi2, ds) in enumerate(sorted(chords_by_phi2.items())):
         z = ds["z"].values
@@ -105,11 +138,15 @@ def fig06_lineal_path(chords_by_phi2: dict, fits, *, a: float, pdf_path) -> None
     right.set_xlabel(r"$\phi_2$")
     right.set_ylabel(r"$L_w/a$")
     right.set_title("(b)")
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig07_chord_density(chords_by_phi2: dict, fits, *, a: float, pdf_path) -> None:
-    """Fig. 7: p(z) by direct chord sampling, with Eq. (31) from the fitted L_w."""
+def fig07(inputs, settings, log):
+    """Fig. 7: p(z) by direct chord sampling (input ``chords``), with Eq. (31) from the fitted
+    L_w (input ``fits``)."""
+    chords_by_phi2 = _by_phi2(inputs["chords"], CHORDS)
+    fits = read_dataset(inputs["fits"])
+    a = settings["a"]
     fig, ax = figure()
     for i, (phi2, ds) in enumerate(sorted(chords_by_phi2.items())):
         z = ds["z_chord"].values
@@ -123,7 +160,7 @@ def fig07_chord_density(chords_by_phi2: dict, fits, *, a: float, pdf_path) -> No
     ax.set_ylabel(r"$a\, p(z)$")
     ax.legend(loc="lower left", title="chord sampling (points)\nEq. (31) with fitted $L_w$ (lines)",
               fontsize=7, title_fontsize=7)
-    save_figure(fig, pdf_path)
+    return fig
 
 
 # --------------------------------------------------------------------------- Sec. V A-B
@@ -151,11 +188,13 @@ def _band(ax, x, mean, sem, colour, label=None):
     ax.plot(x, mean, "-", color=colour, lw=1.0, label=label)
 
 
-def fig03_surface_void(surface_by_phi2: dict, *, a: float, pdf_path) -> None:
-    """Fig. 3: F_sv(r) of the Debye media per phi2 (mean +- SEM band over samples, level sets
-    tuned to the exact s) and the parameter-free Eq. (24)."""
+def fig03(inputs, settings, log):
+    """Fig. 3: F_sv(r) of the Debye media per phi2 (input ``surface``: mean +- SEM band over
+    samples, level sets tuned to the exact s) and the parameter-free Eq. (24)."""
     from randmedia.theory.debye_formulas import debye_surface_void
 
+    surface_by_phi2 = _by_phi2(inputs["surface"], SURFACE)
+    a = settings["a"]
     fig, axes = _panels(len(surface_by_phi2))
     for label, ax, (phi2, ds) in zip("abcdefghij", axes, sorted(surface_by_phi2.items())):
         r = ds["r"].values
@@ -169,15 +208,17 @@ def fig03_surface_void(surface_by_phi2: dict, *, a: float, pdf_path) -> None:
         ax.set_xlim(0, r.max() / a)
     axes[0].set_ylabel(r"$a\,F_{sv}(r)$")
     axes[0].legend(loc="lower right", fontsize=7)
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig04_surface_surface(surface_by_phi2: dict, *, a: float, pdf_path) -> None:
-    """Fig. 4: F_ss(r) of the Debye media per phi2 (mean +- SEM band) and Eq. (26); log scale,
-    since F_ss diverges as s/(pi r) at r -> 0 (bins below 1 pixel, smeared by the interface
-    deposit, are not drawn)."""
+def fig04(inputs, settings, log):
+    """Fig. 4: F_ss(r) of the Debye media per phi2 (input ``surface``: mean +- SEM band) and
+    Eq. (26); log scale, since F_ss diverges as s/(pi r) at r -> 0 (bins below 1 pixel,
+    smeared by the interface deposit, are not drawn)."""
     from randmedia.theory.debye_formulas import debye_surface_surface
 
+    surface_by_phi2 = _by_phi2(inputs["surface"], SURFACE)
+    a = settings["a"]
     fig, axes = _panels(len(surface_by_phi2))
     for label, ax, (phi2, ds) in zip("abcdefghij", axes, sorted(surface_by_phi2.items())):
         r = ds["r"].values
@@ -192,16 +233,19 @@ def fig04_surface_surface(surface_by_phi2: dict, *, a: float, pdf_path) -> None:
         ax.set_xlim(0, r.max() / a)
     axes[0].set_ylabel(r"$a^2 F_{ss}(r)$")
     axes[0].legend(loc="upper right", fontsize=7)
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig05_pore_size(pores_by_phi2: dict, fits, *, a: float, pdf_path) -> None:
-    """Fig. 5: (a) P(delta) phi1/s against delta/a per phi2 (simulation: mean +- SEM band;
-    Eq. (27) with our fitted p1: dashed; with the paper's cubic p1: dotted); (b) <delta>/a
-    against phi2 with Eq. (28) (paper's coefficients and ours)."""
+def fig05(inputs, settings, log):
+    """Fig. 5: (a) P(delta) phi1/s against delta/a per phi2 (input ``pores``; simulation: mean
+    +- SEM band; Eq. (27) with our fitted p1 (input ``fits``): dashed; with the paper's cubic
+    p1: dotted); (b) <delta>/a against phi2 with Eq. (28) (paper's coefficients and ours)."""
     from randmedia.theory.debye import debye_specific_surface
     from randmedia.theory.debye_formulas import debye_mean_pore_size, pore_p1, pore_size_density
 
+    pores_by_phi2 = _by_phi2(inputs["pores"], PORES)
+    fits = read_dataset(inputs["fits"])
+    a = settings["a"]
     fig, (left, right) = figure(ncols=2, nrows=1, width=2 * 3.4, aspect=0.75)
     for i, (phi2, ds) in enumerate(sorted(pores_by_phi2.items())):
         x = ds["delta_bin"].values
@@ -239,16 +283,21 @@ def fig05_pore_size(pores_by_phi2: dict, fits, *, a: float, pdf_path) -> None:
     right.set_ylabel(r"$\langle\delta\rangle/a$")
     right.legend(loc="upper right", fontsize=7)
     right.set_title("(b)")
-    save_figure(fig, pdf_path)
+    return fig
 
 
 # --------------------------------------------------------------------------- Sec. VI
 
 
-def fig08_models(images: dict, *, pdf_path) -> None:
-    """Fig. 8: one image per particle-dispersion model at the comparison phi2 (phase 2 yellow)."""
+def fig08(inputs, settings, log):
+    """Fig. 8: one image per particle-dispersion model at the comparison phi2 (phase 2 yellow):
+    input ``samples``, one file per model, titled by ``settings["titles"]``."""
     from matplotlib.colors import ListedColormap
 
+    images = {}
+    for title, path in zip(settings["titles"], inputs["samples"]):
+        ds = read_dataset(path, PHASE_IMAGE, attrs=["phi2"])
+        images[rf"{title}, $\phi_2 = {float(ds.attrs['phi2']):g}$"] = ds["phase"].values
     fig, axes = _panels(len(images), width=2 * 3.4)
     cmap = ListedColormap(PHASE_COLOURS)
     for label, ax, (title, image) in zip("abcdefghij", axes, images.items()):
@@ -256,7 +305,7 @@ def fig08_models(images: dict, *, pdf_path) -> None:
         ax.set_xticks([])
         ax.set_yticks([])
         ax.set_title(f"({label}) {title}")
-    save_figure(fig, pdf_path)
+    return fig
 
 
 #: line style of each model in Figs. 9-12
@@ -265,7 +314,7 @@ MODEL_STYLE = {"debye": ("C0", "-", "Debye random media"),
                "hard_disks": ("C2", "-.", "equilibrium hard disks")}
 
 
-def fig09_two_point(models: dict, *, pdf_path) -> None:
+def _fig09_two_point(models: dict):
     """Fig. 9: (a) chi_V(r), (b) F_sv(r)/F_sv(inf), (c) F_ss(r)/F_ss(inf) against r s for the
     three models. ``models`` maps a key of :data:`MODEL_STYLE` to a dict with ``s`` (exact) and
     callables or arrays: ``chi`` (r) -> chi_V, ``fsv``, ``fss`` and optionally ``simulated``
@@ -308,10 +357,10 @@ def fig09_two_point(models: dict, *, pdf_path) -> None:
     axes[2].legend(loc="upper right", fontsize=6,
                    title="lines: exact / formula / simulation\npoints: level-set images",
                    title_fontsize=6)
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig10_to_12(models: dict, *, quantity: str, pdf_path) -> None:
+def _fig10_to_12(models: dict, *, quantity: str):
     """Figs. 10-12 against distance x s: ``quantity`` "pore" (P(delta)/s), "lineal" (L(z)) or
     "chord" (p(z)/s). ``models`` maps a key of :data:`MODEL_STYLE` to a dict with ``s`` and
     ``curve``: a callable of the distance (the analytic result) or a tuple (x, y, y_sem) of a
@@ -348,18 +397,21 @@ def fig10_to_12(models: dict, *, quantity: str, pdf_path) -> None:
     ax.set_xlabel(labels[quantity][0])
     ax.set_ylabel(labels[quantity][1])
     ax.legend(loc="lower left", fontsize=7, title="points: our image estimates", title_fontsize=6)
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def overlapping_disks_level_set(surface: xr.Dataset, pores: xr.Dataset, *, radius: float,
-                                phi2: float, pdf_path) -> None:
+def overlapping_disks_level_set(inputs, settings, log):
     """Validation figure: F_sv, F_ss (Eqs. 35-36) and F(delta), P(delta) (Eq. 37) of digitized
-    overlapping disks on tuned level sets, against the exact results; bottom row: deviations
-    in units of the SEM with the +-3 band. F_ss is drawn from r = 1 px (the bins below are
-    smeared by the interface deposit), F and P while the exact F >= 1e-3."""
+    overlapping disks on tuned level sets (inputs ``surface``, ``pores``), against the exact
+    results; bottom row: deviations in units of the SEM with the +-3 band. F_ss is drawn from
+    r = 1 px (the bins below are smeared by the interface deposit), F and P while the exact
+    F >= 1e-3."""
     from randmedia.theory.overlapping import (pore_size_complementary_cdf, pore_size_density,
                                               surface_surface, surface_void)
 
+    surface = read_dataset(inputs["surface"], SURFACE, attrs=["sigma"])
+    pores = read_dataset(inputs["pores"], PORES)
+    radius, phi2 = settings["radius"], settings["phi2"]
     fig, axes = figure(nrows=2, ncols=4, width=7.4, aspect=0.5, sharex="col",
                        gridspec_kw={"height_ratios": [2, 1], "wspace": 0.5, "hspace": 0.08})
     r = surface["r"].values
@@ -398,7 +450,7 @@ def overlapping_disks_level_set(surface: xr.Dataset, pores: xr.Dataset, *, radiu
     fig.suptitle(rf"Overlapping disks, $\phi_2 = {phi2:g}$, $R = {radius:g}$ px, "
                  rf"{surface.sizes['sample']} images: level sets ($\sigma = "
                  rf"{float(surface.attrs['sigma']):.3f}$ px) against Eqs. (35)-(37)", fontsize=8)
-    save_figure(fig, pdf_path)
+    return fig
 
 
 def _hard_disk_pore_density(radius: float, phi2: float):
@@ -408,9 +460,46 @@ def _hard_disk_pore_density(radius: float, phi2: float):
     return lambda delta: scaled_particle.eq41_pore_size_density(delta, phi2, radius)
 
 
-def section6_figure(number: int, *, a: float, media_surface=None, media_pores=None,
-                    media_chords=None, disks_surface=None, disks_pores=None, disks_chords=None,
-                    hard_surface=None, hard_pores=None, radius: float, phi2: float, pdf_path) -> None:
+#: reading of the Sec. VI inputs by kind (the part of the input name after the model:
+#: media_surface, disks_chords, hard_pores, ...): (variables, attributes)
+_SECTION6_SPECS = {"surface": (SURFACE, ["phi2", "length_scale"]), "pores": (PORES, ["phi2"]),
+                   "chords": (CHORDS, ["phi2"])}
+
+
+def _section6(number: int, inputs, settings):
+    """Figs. 9-12 from the rule's inputs ``{model}_{kind}`` (models media, disks, hard; kinds
+    surface, pores, chords) and settings ``a``, ``radius``, ``phi2``."""
+    data = {}
+    for name, path in inputs.items():
+        spec, attrs = _SECTION6_SPECS[name.split("_", 1)[1]]
+        data[name] = read_dataset(path, spec, attrs=attrs)
+    return _section6_figure(number, a=settings["a"], radius=settings["radius"],
+                            phi2=settings["phi2"], **data)
+
+
+def fig09(inputs, settings, log):
+    """Fig. 9: chi_V(r), F_sv(r), F_ss(r) of the three models at the comparison phi2, against r s."""
+    return _section6(9, inputs, settings)
+
+
+def fig10(inputs, settings, log):
+    """Fig. 10: P(delta) of the three models, against delta s."""
+    return _section6(10, inputs, settings)
+
+
+def fig11(inputs, settings, log):
+    """Fig. 11: L(z) of the three models, against z s."""
+    return _section6(11, inputs, settings)
+
+
+def fig12(inputs, settings, log):
+    """Fig. 12: p(z) of the three models, against z s."""
+    return _section6(12, inputs, settings)
+
+
+def _section6_figure(number: int, *, a: float, media_surface=None, media_pores=None,
+                     media_chords=None, disks_surface=None, disks_pores=None, disks_chords=None,
+                     hard_surface=None, hard_pores=None, radius: float, phi2: float):
     """Figs. 9-12 (Sec. VI): Debye media (our simulation, and Eqs. 21, 24, 26 in Fig. 9),
     overlapping disks (exact Eqs. 32-39; our level-set estimates as points) and equilibrium
     hard disks (Fig. 9: our images; Figs. 10-12: Eqs. 41-43, our image estimate of P as points),
@@ -444,8 +533,7 @@ def section6_figure(number: int, *, a: float, media_surface=None, media_pores=No
                 "s": s_hard, "phi1": 1.0 - hphi2, "simulated": None,
                 "chi": lambda r, f=tabulated("S2_void"), p=1.0 - hphi2: f(r) - p * p,
                 "fsv": tabulated("F_sv"), "fss": tabulated("F_ss")}
-        fig09_two_point(models, pdf_path=pdf_path)
-        return
+        return _fig09_two_point(models)
     quantity = {10: "pore", 11: "lineal", 12: "chord"}[number]
     if quantity == "pore":
         debye_curve = (media_pores["delta_bin"].values, media_pores["P"].values, media_pores["P_sem"].values)
@@ -474,4 +562,10 @@ def section6_figure(number: int, *, a: float, media_surface=None, media_pores=No
         else:
             entry["curve"] = lambda z: hard_disks.chord_density_void(z, hr, hphi2)
         models["hard_disks"] = entry
-    fig10_to_12(models, quantity=quantity, pdf_path=pdf_path)
+    return _fig10_to_12(models, quantity=quantity)
+
+
+FIGURES = {1: fig01, 2: fig02, 3: fig03, 4: fig04, 5: fig05, 6: fig06, 7: fig07, 8: fig08, 9: fig09,
+           10: fig10, 11: fig11, 12: fig12,
+           "overlapping_disks_s2": overlapping_disks_s2,
+           "overlapping_disks_level_set": overlapping_disks_level_set}

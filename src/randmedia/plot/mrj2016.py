@@ -1,9 +1,12 @@
 """Figures 1-13 of Klatt & Torquato, PRE 94, 022152 (2016), with the paper's axes.
 
-Each figure function takes ``inputs`` (name -> file: ``config_{system}`` for a
-configuration, ``{kind}_{system}`` for a merged descriptor file), the rule's
-``params`` and a logger, and returns the matplotlib figure. A system missing
-from ``inputs`` is left out of the figure (and logged). Not reproduced: the
+:data:`FIGURES` (end of the module) maps each figure number to its function:
+``figNN(inputs, settings, log)`` takes ``inputs`` (name -> file: ``config_{system}``
+for a configuration, ``{kind}_{system}`` for a merged descriptor file), the config
+values the figure reads (``settings``) and a logger, and returns the matplotlib
+figure; the rule ``mrj2016_figure`` runs it through ``workflow/scripts/mrj2016/figure.py``
+(convention: :mod:`randmedia.plot.rule`). A system missing from ``inputs`` is left
+out of the figure (and logged). Not reproduced: the
 phi = 0.50 liquid of Ref. [39] (Fig. 3) and the MD packings of Ref. [29]
 (Figs. 7, 10) -- external data we do not generate.
 """
@@ -57,9 +60,9 @@ def _overlapping_curves(r, phi):
 # --------------------------------------------------------------------------- Figs. 3-5, 12, 13
 
 
-def _correlation_figure(inputs, params, log, *, which):
+def _correlation_figure(inputs, settings, log, *, which):
     """Three stacked panels (overlapping, equilibrium, MRJ) of one correlation function."""
-    phi_over = params["overlapping_phi"]
+    phi_over = settings["overlapping_phi"]
     systems = [("overlapping", None), ("equilibrium", _load(inputs, "correlation_equilibrium", log)),
                ("mrj", _load(inputs, "correlation_mrj", log))]
     fig, axes = figure(nrows=3, ncols=1, aspect=0.62, sharex=True)
@@ -126,39 +129,39 @@ def _correlation_figure(inputs, params, log, *, which):
     return fig
 
 
-def fig03(inputs, params, log):
+def fig03(inputs, settings, log):
     """Fig. 3: S2(r)."""
-    return _correlation_figure(inputs, params, log, which="S2")
+    return _correlation_figure(inputs, settings, log, which="S2")
 
 
-def fig04(inputs, params, log):
+def fig04(inputs, settings, log):
     """Fig. 4: F_sv(r)/s."""
-    return _correlation_figure(inputs, params, log, which="Fsv")
+    return _correlation_figure(inputs, settings, log, which="Fsv")
 
 
-def fig05(inputs, params, log):
+def fig05(inputs, settings, log):
     """Fig. 5: F_ss(r)/s^2 (insets at r = 2D)."""
-    return _correlation_figure(inputs, params, log, which="Fss")
+    return _correlation_figure(inputs, settings, log, which="Fss")
 
 
-def fig12(inputs, params, log):
+def fig12(inputs, settings, log):
     """Fig. 12: two-body F*_sv(r)/s with the contact slope (Eq. B3)."""
-    return _correlation_figure(inputs, params, log, which="Fsv2")
+    return _correlation_figure(inputs, settings, log, which="Fsv2")
 
 
-def fig13(inputs, params, log):
+def fig13(inputs, settings, log):
     """Fig. 13: two-body F*_ss(r)/s^2 with the contact value (Eq. B4; insets at r = D)."""
-    return _correlation_figure(inputs, params, log, which="Fss2")
+    return _correlation_figure(inputs, settings, log, which="Fss2")
 
 
 # --------------------------------------------------------------------------- Fig. 6
 
 
-def fig06(inputs, params, log):
+def fig06(inputs, settings, log):
     """Fig. 6: spectral densities -- overlapping (bottom), liquid (centre), MRJ (top)."""
     from randmedia.describe.spectral import form_factor_zeros, overlapping_spectral_density
 
-    k_max = params["spectral"]["k_max"]
+    k_max = settings["spectral"]["k_max"]
     fig, axes = figure(nrows=3, ncols=1, aspect=0.62, sharex=True)
     zeros = form_factor_zeros(k_max)
     panels = [("mrj_large", axes[0]), ("equilibrium", axes[1])]
@@ -187,7 +190,7 @@ def fig06(inputs, params, log):
                                label=r"$\phi v_D S(0)$ (EOS, Eq. 32)")
         ax.set_ylabel(r"$\tilde\chi_V(k)/D^3$")
         ax.legend(loc="upper right", fontsize=6, title=title, title_fontsize=6)
-    phi = params["overlapping_phi"]
+    phi = settings["overlapping_phi"]
     k = np.linspace(0.05, k_max, 500)
     axes[2].plot(k, overlapping_spectral_density(k, phi), color=COLOURS["overlapping"],
                  label="overlapping spheres (exact, Eq. 11)")
@@ -222,12 +225,12 @@ def _liquid_pore_theory(phi, log):
 # --------------------------------------------------------------------------- Figs. 7, 8
 
 
-def fig07(inputs, params, log):
+def fig07(inputs, settings, log):
     """Fig. 7: complementary cumulative pore-size distribution F(delta) (inset: MRJ by phi)."""
     from randmedia.theory.overlapping import pore_size_complementary_cdf
 
     fig, ax = figure(aspect=0.8)
-    phi_over = params["overlapping_phi"]
+    phi_over = settings["overlapping_phi"]
     delta = np.linspace(0, 1.0, 400)
     ax.plot(delta, pore_size_complementary_cdf(delta, RADIUS, phi_over, 3), color=COLOURS["overlapping"],
             lw=0.9, label="overlapping (exact)")
@@ -245,7 +248,7 @@ def fig07(inputs, params, log):
                         label="liquid (scaled-particle theory)")
         d, F = ds["delta"].values, ds["F_mean"].values
         step = max(1, len(d) // 60)
-        phi = (params["overlapping_phi"] if system == "overlapping" else float(np.mean(ds["eta"].values)))
+        phi = (settings["overlapping_phi"] if system == "overlapping" else float(np.mean(ds["eta"].values)))
         ax.plot(d[::step], np.where(F[::step] > 0, F[::step], np.nan), "o", ms=2.2, mfc="none",
                 color=COLOURS[system], label=rf"{LABELS[system]}, $\phi = {phi:.3f}$")
     ax.set_yscale("log")
@@ -279,7 +282,7 @@ def fig07(inputs, params, log):
     return fig
 
 
-def fig08(inputs, params, log):
+def fig08(inputs, settings, log):
     """Fig. 8: exclusion probability E_V(r) of the centres at unit density (r in lambda)."""
     from randmedia.theory.overlapping import exclusion_probability, number_density
 
@@ -291,7 +294,7 @@ def fig08(inputs, params, log):
         ds = _load(inputs, f"points_{system}", log)
         if ds is None:
             continue
-        rho = (number_density(params["overlapping_phi"], RADIUS, 3) if system == "overlapping"
+        rho = (number_density(settings["overlapping_phi"], RADIUS, 3) if system == "overlapping"
                else float(np.mean(ds["rho"].values)))
         lam = rho ** (-1.0 / 3.0)
         if system == "equilibrium":
@@ -301,7 +304,7 @@ def fig08(inputs, params, log):
                         label="liquid (scaled-particle theory)")
         r, E = ds["r"].values, ds["E_V_mean"].values
         step = max(1, len(r) // 80)
-        phi = params["overlapping_phi"] if system == "overlapping" else float(np.mean(ds["eta"].values))
+        phi = settings["overlapping_phi"] if system == "overlapping" else float(np.mean(ds["eta"].values))
         ax.plot(r[::step] / lam, np.where(E[::step] > 0, E[::step], np.nan), "o", ms=2.2, mfc="none",
                 color=COLOURS[system], label=rf"{LABELS[system]}, $\phi = {phi:.3f}$")
         if system in ("fcc", "bcc"):
@@ -318,7 +321,7 @@ def fig08(inputs, params, log):
 # --------------------------------------------------------------------------- Figs. 9, 10
 
 
-def fig09(inputs, params, log):
+def fig09(inputs, settings, log):
     """Fig. 9: number distributions rescaled by sigma_N against the standard normal."""
     from scipy.stats import norm, poisson
 
@@ -347,13 +350,13 @@ def fig09(inputs, params, log):
                 continue
             colour = cmap(j / max(1, len(radii) - 1))
             keep = p > 0
-            gauss = R >= params["windows"]["fit_r_min"]
+            gauss = R >= settings["windows"]["fit_r_min"]
             marker = "o" if (gauss or system == "overlapping") else "s"
             ax.plot((n[keep] - mean) / sigma, sigma * p[keep], marker, ms=2.2, color=colour,
                     mfc=colour if (gauss and system != "overlapping") else "none",
                     label=rf"$R = {R:g}D = {R / lam:.2f}\lambda$")
             if system == "overlapping":  # exact Poisson distribution
-                mu = number_density(params["overlapping_phi"], RADIUS, 3) * 4 * math.pi * R**3 / 3
+                mu = number_density(settings["overlapping_phi"], RADIUS, 3) * 4 * math.pi * R**3 / 3
                 nn = np.arange(max(0, int(mu - 5 * math.sqrt(mu))), int(mu + 5 * math.sqrt(mu)) + 2)
                 ax.plot((nn - mu) / math.sqrt(mu), math.sqrt(mu) * poisson.pmf(nn, mu), "--",
                         color=colour, lw=0.7)
@@ -363,7 +366,7 @@ def fig09(inputs, params, log):
     return fig
 
 
-def fig10(inputs, params, log):
+def fig10(inputs, settings, log):
     """Fig. 10: number variance sigma_N^2(R) against R/lambda with the fits b2 R^2 + b3 R^3 and R^2."""
     from randmedia.fit.number_variance import MODELS
 
@@ -383,7 +386,7 @@ def fig10(inputs, params, log):
                     color=COLOURS[system], label=LABELS[system])
         r_top = max(r_top, R[ok].max())
         low, high = min(low, var[ok].min()), max(high, (var + sem)[ok].max())
-        rmin = params["windows"]["fit_r_min"] / lam
+        rmin = settings["windows"]["fit_r_min"] / lam
         xf = np.linspace(rmin, max(R.max(), 2 * rmin), 100)
         for model, style in (("b2_b3", "-"), ("b2", "--")):
             if system == "overlapping" or f"fit_{model}" not in ds:
@@ -446,13 +449,13 @@ def render_spheres(positions, box, side: float, pixels: int = 360, diameter: flo
     return shade.T[::-1], np.isfinite(depth).T[::-1], side
 
 
-def fig01(inputs, params, log):
+def fig01(inputs, settings, log):
     """Fig. 1: renderings of (a) overlapping spheres, (b) the liquid, (c) an MRJ packing."""
     from randmedia.plot.style import PAGE_WIDTH
     from randmedia.studies.mrj2016 import load_configuration
 
     fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=1.0)
-    side = float(params["figures"].get("render_side", 8.0))
+    side = float(settings["figures"].get("render_side", 8.0))
     base = {"overlapping": np.array([0.55, 0.55, 0.6]), "equilibrium": np.array([0.25, 0.45, 0.85]),
             "mrj": np.array([0.85, 0.3, 0.25])}
     for label, ax, system in zip("abc", axes, ("overlapping", "equilibrium", "mrj")):
@@ -480,7 +483,7 @@ def _disk_configuration(rng, n, side, diameter):
     return np.array(centres)
 
 
-def fig02(inputs, params, log):
+def fig02(inputs, settings, log):
     """Fig. 2: events behind the descriptors of Table I: (a) two-phase medium, (b) point process."""
     from matplotlib.patches import Circle, FancyArrowPatch
 
@@ -535,7 +538,7 @@ def fig02(inputs, params, log):
     return fig
 
 
-def fig11(inputs, params, log):
+def fig11(inputs, settings, log):
     """Fig. 11: section through B_R(c_j) and the test sphere B_r(x) (Eqs. A2-A5)."""
     from matplotlib.patches import Arc, Circle
 

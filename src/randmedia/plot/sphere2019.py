@@ -1,4 +1,11 @@
-"""Figures of the sphere2019 pipeline (Figs. 1-8 of the paper).
+"""Figures 1-8 of *Hyperuniformity on spherical surfaces*, PRE 100, 022107 (2019).
+
+:data:`FIGURES` (end of the module) maps each figure number to its function: ``figNN(inputs,
+settings, log)`` reads the rule's input files (``inputs``: name -> list of paths), takes the
+config values it uses from ``settings`` and returns the matplotlib figure -- Figs. 5-8, drawn
+also for the second reading of Eq. (12b) (input ``alpha_cubed``), return both as
+``{"pdf": ..., "alpha_cubed_pdf": ...}``; the rules ``sphere2019_figNN`` run it through
+``workflow/scripts/sphere2019/figure.py`` (convention: :mod:`randmedia.plot.rule`).
 
 Descriptor files (:mod:`randmedia.describe.sphere_points`) carry sigma^2(a) for one
 or two window-centre variants, its jackknife SEM, g2 and sigma^2 from g2; every
@@ -11,7 +18,10 @@ from __future__ import annotations
 import numpy as np
 import xarray as xr
 
-from randmedia.plot.style import PAGE_WIDTH, figure, save_figure
+from randmedia.describe.sphere_points import CAP_VARIANCE
+from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of
+from randmedia.io import read_dataset
+from randmedia.plot.style import PAGE_WIDTH, figure
 from randmedia.theory.sphere_caps import poisson_variance, uniform_variance
 
 VIEW = (np.deg2rad(20.0), np.deg2rad(30.0))  # elevation, azimuth of the viewer
@@ -91,11 +101,21 @@ def _panel_label(ax, label: str, x: float = 0.02, y: float = 0.97) -> None:
     ax.text(x, y, f"({label})", transform=ax.transAxes, va="top", ha="left")
 
 
+def _first_frames(paths) -> list[np.ndarray]:
+    """The first frame of each configuration file."""
+    return [frames_of(read_dataset(path, SPHERE_CONFIG))[0] for path in paths]
+
+
+def _cap_variances(paths) -> list[xr.Dataset]:
+    """The descriptor files of the point patterns (sigma^2(a) in caps)."""
+    return [read_dataset(path, CAP_VARIANCE, attrs=["R", "density"]) for path in paths]
+
+
 # --------------------------------------------------------------------------- Fig. 1
 
 
-def fig01_cap_schematic(pdf_path) -> None:
-    """Fig. 1: the spherical-cap window of arc length x, area s and base radius a."""
+def fig01(inputs, settings, log):
+    """Fig. 1: the spherical-cap window of arc length x, area s and base radius a (no inputs)."""
     from matplotlib.patches import Arc, Polygon
 
     fig, ax = figure(aspect=0.9)
@@ -134,15 +154,17 @@ def fig01_cap_schematic(pdf_path) -> None:
     ax.set_aspect("equal")
     ax.axis("off")
     ax.set_title(r"cap of base radius $a = R\sin\phi$, area $s = 2\pi R h$, $0 \leq \phi \leq \pi/2$")
-    save_figure(fig, pdf_path)
+    return fig
 
 
 # --------------------------------------------------------------------------- Figs. 2 and 3
 
 
-def fig02_regular(ico_points, ico: xr.Dataset, fib_points, fib: xr.Dataset, pdf_path) -> None:
-    """Fig. 2: (a) icosahedral (Tegmark) grid, (b) Fibonacci grid, (c) sigma^2/(rho s) vs
-    a rho^(1/2), inset sigma^2 vs a."""
+def fig02(inputs, settings, log):
+    """Fig. 2: (a) icosahedral (Tegmark) grid, (b) Fibonacci grid (inputs ``configs`` and
+    ``descriptors``, in this order), (c) sigma^2/(rho s) vs a rho^(1/2), inset sigma^2 vs a."""
+    ico_points, fib_points = _first_frames(inputs["configs"])
+    ico, fib = _cap_variances(inputs["descriptors"])
     fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=1.0,
                        gridspec_kw={"width_ratios": [1, 1, 1.25], "wspace": 0.3})
     render_sphere(axes[0], ico_points, float(ico.attrs["R"]), size=3.0,
@@ -164,15 +186,17 @@ def fig02_regular(ico_points, ico: xr.Dataset, fib_points, fib: xr.Dataset, pdf_
     inset.set_ylabel(r"$\sigma_n^2$", fontsize=7, labelpad=1)
     inset.tick_params(labelsize=6)
     _panel_label(ax, "c")
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig03_uncorrelated(poisson_points, uniform_points, uniform: xr.Dataset, poisson: xr.Dataset,
-                       pdf_path) -> None:
-    """Fig. 3: (a) Poisson and (b) uniform configurations; (c) sigma^2/(rho s) vs a/R with
-    Eq. (6) (uniform, canonical) and Eq. (7) (Poisson, grand canonical)."""
+def fig03(inputs, settings, log):
+    """Fig. 3: (a) Poisson and (b) uniform configurations (inputs ``configs`` and ``descriptors``,
+    in this order); (c) sigma^2/(rho s) vs a/R with Eq. (6) (uniform, canonical) and Eq. (7)
+    (Poisson, grand canonical)."""
     from matplotlib.gridspec import GridSpec
 
+    poisson_points, uniform_points = _first_frames(inputs["configs"])
+    poisson, uniform = _cap_variances(inputs["descriptors"])
     fig, _ = figure(width=PAGE_WIDTH, aspect=0.42)
     fig.clf()
     grid = GridSpec(2, 3, figure=fig, width_ratios=[1, 1, 1.3], wspace=0.35)
@@ -197,7 +221,7 @@ def fig03_uncorrelated(poisson_points, uniform_points, uniform: xr.Dataset, pois
     top.tick_params(labelbottom=False)
     bottom.set_xlabel(r"$a/R$")
     top.set_title("(c)")
-    save_figure(fig, pdf_path)
+    return fig
 
 
 # --------------------------------------------------------------------------- Figs. 4-8
@@ -216,9 +240,26 @@ def _fluid_label(ds: xr.Dataset, with_coupling: bool = False) -> str:
     return label
 
 
-def fig04_fluids(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 1.0) -> None:
-    """Fig. 4: sigma^2/(rho s) vs a rho^(1/2) at R = 15 (a >= a_min); inset: the normalized
-    sigma^2*(a) = sigma^2(a)/sigma^2(R) vs a with references ~a and ~a^2."""
+def _fluids(paths) -> dict[str, xr.Dataset]:
+    """{system: descriptor file} of the fluids, in the order of ``paths``."""
+    by_system = {}
+    for path in paths:
+        ds = read_dataset(path, CAP_VARIANCE, attrs=["system", "R", "density", "potential", "coupling"])
+        by_system[ds.attrs["system"]] = ds
+    return by_system
+
+
+def _both_readings(draw, printed, alpha_cubed, **kwargs) -> dict:
+    """{output name: figure} of ``draw`` for Eq. (12b) as printed (output ``pdf``) and for its
+    second reading (output ``alpha_cubed_pdf``)."""
+    return {"pdf": draw(printed, **kwargs), "alpha_cubed_pdf": draw(alpha_cubed, **kwargs)}
+
+
+def fig04(inputs, settings, log):
+    """Fig. 4: sigma^2/(rho s) vs a rho^(1/2) of the R = 15 fluids (input ``descriptors``;
+    a >= settings["a_min"]); inset: the normalized sigma^2*(a) = sigma^2(a)/sigma^2(R) vs a
+    with references ~a and ~a^2."""
+    descriptors, a_min = _fluids(inputs["descriptors"]), settings["a_min"]
     fig, ax = figure(aspect=0.8)
     inset = ax.inset_axes([0.55, 0.52, 0.42, 0.42])
     for k, (system, ds) in enumerate(descriptors.items()):
@@ -243,11 +284,18 @@ def fig04_fluids(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float =
     ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
     ax.set_ylim(bottom=0)
     ax.legend(loc="lower left", fontsize=6)
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig05_alpha(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 1.0) -> None:
-    """Fig. 5: sigma^2/(rho s) vs a rho^(1/2) at R = 5 for U_dd|| with alpha = 1, 3, 6."""
+def fig05(inputs, settings, log):
+    """Fig. 5: sigma^2/(rho s) vs a rho^(1/2) at R = 5 for U_dd|| with alpha = 1, 3, 6, for both
+    readings of Eq. (12b)."""
+    return _both_readings(_fig05_alpha, _fluids(inputs["descriptors"]), _fluids(inputs["alpha_cubed"]),
+                          a_min=settings["a_min"])
+
+
+def _fig05_alpha(descriptors: dict[str, xr.Dataset], *, a_min: float = 1.0):
+    """Fig. 5 from the descriptor files of the three fluids."""
     fig, ax = figure()
     for k, (system, ds) in enumerate(descriptors.items()):
         a, scaled, sem, rho = _scaled(ds)
@@ -261,21 +309,43 @@ def fig05_alpha(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 
     ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
     ax.set_ylim(bottom=0)
     ax.legend(loc="lower left", fontsize=7)
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig06_snapshots(snapshots: dict[str, tuple[np.ndarray, float, str]], pdf_path) -> None:
+def _snapshots(paths) -> dict[str, tuple[np.ndarray, float, str]]:
+    """{panel label: (last frame, R, title)} of the configuration files."""
+    panels = {}
+    for label, path in zip("abcdefgh", paths):
+        ds = read_dataset(path, SPHERE_CONFIG, attrs=["R", "coupling"])
+        title = rf"({label}) $\alpha = {ds.attrs['coupling']:g}$, N = {int(ds['n_points'].values[-1])}"
+        panels[label] = (frames_of(ds)[-1], float(ds.attrs["R"]), title)
+    return panels
+
+
+def fig06(inputs, settings, log):
+    """Fig. 6: snapshots for alpha = 1, 3, 6 (input ``configs``; ``alpha_cubed`` for the second
+    reading of Eq. 12b)."""
+    return _both_readings(_fig06_snapshots, _snapshots(inputs["configs"]),
+                          _snapshots(inputs["alpha_cubed"]))
+
+
+def _fig06_snapshots(snapshots: dict[str, tuple[np.ndarray, float, str]]):
     """Fig. 6: one configuration per repulsion strength (points, R, label); particles drawn
     as disks of diameter d_LJ."""
     n = len(snapshots)
     fig, axes = figure(ncols=n, nrows=1, width=PAGE_WIDTH, aspect=1.0)
     for ax, (label, (points, radius, title)) in zip(np.atleast_1d(axes), snapshots.items()):
         render_sphere(ax, points, radius, colour="C3", title=title, diameter=1.0)
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig07_g2(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 0.0) -> None:
-    """Fig. 7: geodesic g2(x) at R = 5 for increasing repulsion."""
+def fig07(inputs, settings, log):
+    """Fig. 7: geodesic g2(x) at R = 5 for increasing repulsion, for both readings of Eq. (12b)."""
+    return _both_readings(_fig07_g2, _fluids(inputs["descriptors"]), _fluids(inputs["alpha_cubed"]))
+
+
+def _fig07_g2(descriptors: dict[str, xr.Dataset]):
+    """Fig. 7 from the descriptor files of the fluids."""
     fig, ax = figure()
     for k, (system, ds) in enumerate(descriptors.items()):
         _band(ax, ds["x"].values, ds["g2"].values, np.nan_to_num(ds["g2_sem"].values),
@@ -286,12 +356,17 @@ def fig07_g2(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 0.0
     radius = max((float(ds.attrs["R"]) for ds in descriptors.values()), default=1.0)
     ax.set_xlim(0, min(np.pi * radius, 8.0))
     ax.legend(loc="upper right", fontsize=7)
-    save_figure(fig, pdf_path)
+    return fig
 
 
-def fig08_from_g2(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float = 0.0) -> None:
+def fig08(inputs, settings, log):
     """Fig. 8: sigma^2/(rho s) from g2 by Eq. (4) (solid) against the direct window counts
-    (dotted), R = 5."""
+    (dotted), R = 5, for both readings of Eq. (12b)."""
+    return _both_readings(_fig08_from_g2, _fluids(inputs["descriptors"]), _fluids(inputs["alpha_cubed"]))
+
+
+def _fig08_from_g2(descriptors: dict[str, xr.Dataset], *, a_min: float = 0.0):
+    """Fig. 8 from the descriptor files of the fluids."""
     fig, ax = figure()
     for k, (system, ds) in enumerate(descriptors.items()):
         a, scaled, sem, rho = _scaled(ds)
@@ -305,4 +380,7 @@ def fig08_from_g2(descriptors: dict[str, xr.Dataset], pdf_path, *, a_min: float 
     ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
     ax.set_ylim(bottom=0)
     ax.legend(loc="upper right", fontsize=6)
-    save_figure(fig, pdf_path)
+    return fig
+
+
+FIGURES = {1: fig01, 2: fig02, 3: fig03, 4: fig04, 5: fig05, 6: fig06, 7: fig07, 8: fig08}

@@ -1,12 +1,10 @@
-"""Rule mrj2016_figure: one figure of the paper."""
+"""Rule mrj2016_figure (figNN, NN = 01 ... 13): the figure
+randmedia.plot.mrj2016.FIGURES[params.figure], saved as PDF and PNG."""
 from randmedia.jobs import start_job
 
 log = start_job(snakemake)
 
 from randmedia.plot import mrj2016
-from randmedia.plot.style import save_figure
+from randmedia.plot.rule import draw_rule_figure
 
-number = int(snakemake.wildcards.nn)
-inputs = {name: path for name, path in snakemake.input.items() if name != "code"}
-fig = mrj2016.FIGURES[number](inputs, dict(snakemake.params.settings), log)
-save_figure(fig, snakemake.output.pdf)
+draw_rule_figure(mrj2016.FIGURES, snakemake, log)
