@@ -32,8 +32,9 @@ import xarray as xr
 from scipy.spatial import cKDTree
 
 from randmedia.describe.chords import LevelSet
-from randmedia.describe.surface import Progress, interface_segments
+from randmedia.describe.surface import interface_segments
 from randmedia.io import VariableSpec
+from randmedia.progress import Progress
 from randmedia.stats import standard_error
 
 
@@ -125,7 +126,7 @@ def pore_size_functions(images, rng: np.random.Generator, *, sigma: float, super
     n_points = np.empty(n, dtype=np.int64)
     mean_pixel_centre = np.empty(n)
     P_pixel_centre = np.empty((n, edges.size - 1))
-    progress = Progress(n, "pore sizes", log)
+    progress = Progress(n, "pore sizes", log, unit="images")
     for k, image in enumerate(images):
         distances = np.sort(void_distances(LevelSet.build(image, 0, sigma, supersample, model), rng,
                                            k_candidates=k_candidates))

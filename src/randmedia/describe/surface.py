@@ -49,29 +49,8 @@ from randmedia.describe.chords import LevelSet
 from randmedia.describe.percolation import wrapping_directions
 from randmedia.describe.two_phase import RadialBinning
 from randmedia.io import VariableSpec
+from randmedia.progress import Progress
 from randmedia.stats import standard_error
-
-
-class Progress:
-    """Log 'k/n done, rate, ETA' after each step (when a logger is given)."""
-
-    def __init__(self, total: int, what: str, log=None):
-        import time
-
-        self.total, self.what, self.log = total, what, log
-        self.done = 0
-        self.start = time.monotonic()
-
-    def step(self) -> None:
-        import time
-
-        self.done += 1
-        if self.log is None:
-            return
-        elapsed = time.monotonic() - self.start
-        rate = self.done / elapsed if elapsed > 0 else float("inf")
-        self.log.info("%s: %d/%d images, %.2f images/s, ETA %.0f s", self.what, self.done,
-                      self.total, rate, (self.total - self.done) / rate)
 
 
 # --------------------------------------------------------------------------- interface extraction
@@ -314,7 +293,7 @@ def surface_functions(images, *, sigma: float, supersample: int, r_max: float,
         raise ValueError(f"expected images of shape (n_samples, ny, nx), got {images.shape}")
     fine_shape = tuple(n * supersample for n in images.shape[1:])
     binning = RadialBinning.build(fine_shape, r_max * supersample, bin_width * supersample)
-    progress = Progress(images.shape[0], "surface functions", log)
+    progress = Progress(images.shape[0], "surface functions", log, unit="images")
     results = []
     for image in images:
         results.append(level_set_descriptors(LevelSet.build(image, 0, sigma, supersample, model),

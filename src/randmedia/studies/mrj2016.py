@@ -31,6 +31,7 @@ import xarray as xr
 
 from randmedia.describe import packings, points, spectral
 from randmedia.describe.averages import nan_mean_sem
+from randmedia.progress import Progress
 
 #: variables of each kind that are averaged over samples (mean + SEM added by :func:`merge`)
 AVERAGED = {
@@ -86,7 +87,7 @@ def _scalars(configs):
 
 
 def correlation_samples(configs: Sequence, *, r_step: float, r_max: float, contact_r: float,
-                        first: int = 0) -> xr.Dataset:
+                        first: int = 0, progress: Progress | None = None) -> xr.Dataset:
     """Appendix-A S2, F_sv, F_ss, F*_sv, F*_ss and contact numbers of each configuration.
 
     Grid r = 0, r_step, ... <= r_max; a sample's values are NaN where r >= h_w - D
@@ -107,6 +108,7 @@ def correlation_samples(configs: Sequence, *, r_step: float, r_max: float, conta
         contacts = packings.contact_number(positions, box, diameter, contact_r)
         for name in ("z_B3", "z_B4", "n_within"):
             extra[name].append(contacts[name])
+        _step(progress)
     per = {name: np.array(v) for name, v in out.items()}
     s = np.array(extra["s"])[:, None]
     per["F_sv_over_s"] = per["F_sv"] / s
@@ -150,12 +152,18 @@ def autocovariance_transform(ds: xr.Dataset, k) -> xr.Dataset:
     return out
 
 
+def _step(progress: Progress | None) -> None:
+    if progress is not None:
+        progress.step()
+
+
 # --------------------------------------------------------------------------- spectral density
 
 
 def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table_k=(),
                      table_width: float | None = None, eps: float = 1e-9, nthreads: int = 1,
-                     first: int = 0, bragg=None, snap_table: bool = False) -> xr.Dataset:
+                     first: int = 0, bragg=None, snap_table: bool = False,
+                     progress: Progress | None = None) -> xr.Dataset:
     """Direct spectral density (Eq. 14) on all allowed wavevectors, binned per sample.
 
     Fine bins [i w, (i+1) w) of width ``bin_width`` up to k_max (Fig. 6), and
@@ -196,6 +204,7 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
         peaks = Sk > 0.5 * n
         bragg_rows.append((peaks.sum(), Sk[peaks].min() / n if peaks.any() else np.nan,
                            Sk[~peaks].max() / n if (~peaks).any() else np.nan))
+        _step(progress)
     centres = 0.5 * (edges[:-1] + edges[1:])
     data = {
         "chi": (("sample", "k"), np.array(chi), _meta("D^3", "spectral density rho m(k)^2 S(k) (Eq. 14), bin mean")),
@@ -240,7 +249,7 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
 
 def points_samples(configs: Sequence, rngs: Sequence[np.random.Generator], *, n_matrix_points: int,
                    bin_width: float, d_max: float, batch: int = 1_000_000, first: int = 0,
-                   covering: bool = True, log=None) -> xr.Dataset:
+                   covering: bool = True, log=None, progress: Progress | None = None) -> xr.Dataset:
     """E_V(r), F(delta), <delta>, <delta^2>, covering radius of each configuration (Sec. V).
 
     ``covering=False`` skips the exact covering radius (NaN), e.g. for Poisson
@@ -266,6 +275,7 @@ def points_samples(configs: Sequence, rngs: Sequence[np.random.Generator], *, n_
         if log is not None:
             log.info("sample %d: %d points (%d in the matrix), <delta> = %.5f D, covering radius %.4f D",
                      first + index, st["n_points"], st["n_matrix"], rows[-1][2], rows[-1][5])
+        _step(progress)
     a = np.array(rows, dtype=float)
     data = {
         "E_V": (("sample", "r"), np.array(E_V), _meta("1", "exclusion probability E_V(r) = P(nearest centre > r)")),
@@ -297,7 +307,8 @@ def window_radii(half_width: float, step: float, extra=()) -> np.ndarray:
 
 
 def windows_samples(configs: Sequence, rngs: Sequence[np.random.Generator], *, radius_step: float,
-                    fR_radii, phi_B: float, max_windows: int, first: int = 0) -> xr.Dataset:
+                    fR_radii, phi_B: float, max_windows: int, first: int = 0,
+                    progress: Progress | None = None) -> xr.Dataset:
     """Window counts N(R) (Sec. VI) of each configuration.
 
     Radii: step, 2 step, ... and ``fR_radii``, up to the largest h_w of the
@@ -322,6 +333,7 @@ def windows_samples(configs: Sequence, rngs: Sequence[np.random.Generator], *, r
         row[:, use] = m["n_throws"], m["sum_N"], m["sum_N2"], m["sum_N3"], m["sum_N4"]
         moments.append(row)
         dists.append([counts[: n_R[i], i] if use[i] else np.zeros(0, dtype=np.int64) for i in fR_index])
+        _step(progress)
     n_max = max((int(c.max()) for d in dists for c in d if c.size), default=0) + 1
     hist = np.zeros((len(dists), len(fR_index), n_max))
     for s, d in enumerate(dists):
@@ -377,10 +389,11 @@ def describe(kind: str, system: str, configs: Sequence, *, first: int, seed: int
         raise ValueError(f"describe({kind!r}) needs {missing}")
     indices = range(first, first + len(configs))
     used = {"system": system, "kind": kind, "first": first}
+    progress = Progress(len(configs), f"{system} {kind}", log)
     if kind == "correlation":
         used.update(descriptors)
         dataset = correlation_samples(configs, r_step=descriptors["r_step"], r_max=descriptors["r_max"],
-                                      contact_r=descriptors["contact_r"], first=first)
+                                      contact_r=descriptors["contact_r"], first=first, progress=progress)
     elif kind == "spectral":
         from randmedia.generate.spheres import bragg_peak_count
 
@@ -389,19 +402,19 @@ def describe(kind: str, system: str, configs: Sequence, *, first: int, seed: int
         dataset = spectral_samples(configs, k_max=spectral["k_max"], bin_width=spectral["bin_width"],
                                    table_k=table_k, table_width=spectral["table_bin_width"],
                                    eps=spectral["nufft_eps"], nthreads=nthreads, first=first, bragg=bragg,
-                                   snap_table=system == "equilibrium")
+                                   snap_table=system == "equilibrium", progress=progress)
     elif kind == "points":
         used.update(pores, seed=seed)
         rngs = [sample_rng(sample_seed(seed, "mrj2016", f"{system}/points", k)) for k in indices]
         dataset = points_samples(configs, rngs, n_matrix_points=pores["matrix_points"],
                                  bin_width=pores["bin_width"], d_max=pores["d_max"], first=first,
-                                 covering=system != "overlapping", log=log)
+                                 covering=system != "overlapping", log=log, progress=progress)
     else:
         used.update(windows, seed=seed)
         rngs = [sample_rng(sample_seed(seed, "mrj2016", f"{system}/windows", k)) for k in indices]
         dataset = windows_samples(configs, rngs, radius_step=windows["radius_step"],
                                   fR_radii=windows["fR_radii"], phi_B=windows["phi_B"],
-                                  max_windows=windows["max_windows"], first=first)
+                                  max_windows=windows["max_windows"], first=first, progress=progress)
     dataset.attrs["system"] = system
     return dataset, used
 
