@@ -49,27 +49,40 @@ def test_overlapping_spheres_sample():
     np.testing.assert_array_equal(x, x2)
 
 
-def test_binning_systematic_uses_only_conventions_consistent_with_the_paper():
-    """Away from the zeros of m(k) a convention must agree with the published values (median
-    deviation <= k_sigma errors); each row's margin is the largest shift a consistent convention
-    makes from ours -- large at a zero, zero elsewhere if the conventions agree there."""
+
+def test_spectral_table_takes_the_configured_reading_of_the_bins_where_it_applies(tmp_path, monkeypatch):
+    """Table IV's chi_V is the configured reading (grid_spacing) when it applies to every row,
+    else our bins of table_bin_width; every reading stays as a column."""
     import pandas as pd
+    import xarray as xr
 
-    from randmedia.compare.mrj2016 import BINNING_PREFIX, binning_systematic
+    from randmedia.compare.mrj2016 import BINNING_PREFIX, table_spectral
+    from randmedia.describe.spectral import TABLE_BINNINGS
 
-    kD = np.array([7.9, 8.5, 9.1, 9.7, 10.2])  # 9.1 is next to the zero 8.987
-    published = pd.DataFrame({"kD": kD.astype(str), "chiV_over_D3": [1.0, 0.5, 0.01, 0.3, 0.6],
-                              "sem_over_D3": 0.01})
-    ours = pd.DataFrame({"kD": kD, "chiV_over_D3": [1.0, 0.5, 0.005, 0.3, 0.6], "sem_over_D3": 0.01})
-    for name, values in (("bin_width", [1.0, 0.5, 0.005, 0.3, 0.6]),     # ours
-                         ("wide", [1.01, 0.49, 0.012, 0.31, 0.6]),       # consistent, differs at the zero
-                         ("shifted", [1.3, 0.8, 0.2, 0.6, 0.9]),         # inconsistent everywhere
-                         ("absent", [np.nan] * 5)):                      # does not apply
-        ours[f"{BINNING_PREFIX}{name}_over_D3"] = values
-        ours[f"{BINNING_PREFIX}{name}_sem_over_D3"] = 0.01
-    margin, consistent = binning_systematic(ours, published, k_sigma=3.0)
-    assert consistent == ["bin_width", "wide"]
-    np.testing.assert_allclose(margin, [0.01, 0.01, 0.007, 0.01, 0.0], atol=1e-12)
-    # without other conventions: no margin
-    margin, consistent = binning_systematic(ours[["kD", "chiV_over_D3", "sem_over_D3"]], published, 3.0)
-    assert consistent == [] and (margin == 0).all()
+    kD = [0.6, 1.1]
+    reference = tmp_path / "table4.csv"
+    pd.DataFrame({"kD": kD, "chiV_over_D3": [1.0, 2.0], "sem_over_D3": [0.1, 0.1]}).to_csv(reference, index=False)
+
+    def spec(grid_values):
+        values = np.ones((2, len(TABLE_BINNINGS), 2))  # (sample, binning, k)
+        values[:, TABLE_BINNINGS.index("grid_spacing")] = grid_values
+        ds = xr.Dataset({"chi_table_mean": ("k_table", [1.0, 1.0]), "chi_table_sem": ("k_table", [0.0, 0.0]),
+                         "k_table_count": (("sample", "k_table"), np.ones((2, 2))),
+                         "chi_table_binning_mean": (("binning", "k_table"), values.mean(axis=0)),
+                         "chi_table_binning_sem": (("binning", "k_table"), np.zeros((len(TABLE_BINNINGS), 2))),
+                         "binning_count": (("sample", "binning", "k_table"), np.full(values.shape, 3.0)),
+                         "binning_width": (("sample", "binning"), np.full((2, len(TABLE_BINNINGS)), 0.3))},
+                        coords={"k_table": kD, "binning": list(TABLE_BINNINGS)}, attrs={"table_width": 0.133})
+        path = tmp_path / "spectral.nc"
+        ds.to_netcdf(path)
+        return str(path)
+
+    import randmedia.compare.mrj2016 as module
+
+    for grid_values, expected, reading in (([5.0, 6.0], [5.0, 6.0], "grid_spacing"),
+                                           ([np.nan, np.nan], [1.0, 1.0], "bin_width")):
+        path = spec(grid_values)
+        monkeypatch.setattr(module, "_load", lambda inputs, kind, system, path=path: xr.open_dataset(path))
+        table = table_spectral({"reference": reference}, {"spectral_binning": "grid_spacing"}, 4)
+        assert table["chiV_over_D3"].tolist() == expected and (table["binning"] == reading).all()
+        assert f"{BINNING_PREFIX}grid_spacing_over_D3" in table and f"{BINNING_PREFIX}labels_over_D3" in table

@@ -247,6 +247,7 @@ rule mrj2016_table:
         "results/mrj2016/tables/table{n}.csv",
     params:
         overlapping_phi=M_OVERLAPPING["phi"],
+        spectral_binning=MRJ2016["tables"]["spectral_binning"],
     benchmark:
         "results/mrj2016/benchmarks/table{n}.tsv"
     log:

@@ -109,7 +109,13 @@ def table_correlation(inputs, params, number: int) -> pd.DataFrame:
 
 
 def table_spectral(inputs, params, number: int) -> pd.DataFrame:
-    """Table IV (equilibrium) or V (MRJ, N = 10 000): chi_V(k) at the paper's kD, SEM over samples."""
+    """Table IV (equilibrium) or V (MRJ, N = 10 000): chi_V(k) at the paper's kD, SEM over samples.
+
+    ``chiV_over_D3`` is the reading ``params["spectral_binning"]`` of the paper's bins
+    (spectral.table_binnings; config mrj2016.tables.spectral_binning: grid_spacing, bins of
+    width 2 pi / L centred on the shells, which reproduces all of Table IV, docs/mrj2016.md)
+    where it applies to every row, else our bins of table_bin_width (column ``binning``
+    says which); every reading is kept as columns chiV_binning_{name}_over_D3 (+ SEM)."""
     system = TABLE_SYSTEMS[number]
     spec = _load(inputs, "spectral", system)
     reference = read_reference(inputs["reference"], ["kD"])
@@ -126,11 +132,20 @@ def table_spectral(inputs, params, number: int) -> pd.DataFrame:
         "wavevectors": counts.astype(int),
         "bin_width_over_D": spec.attrs["table_width"],
     })
-    if "chi_table_binning_mean" in spec:  # the other readings of the paper's bins (spectral.table_binnings)
+    table["binning"] = "bin_width"
+    if "chi_table_binning_mean" in spec:  # every reading of the paper's bins (spectral.table_binnings)
         for name in spec["binning"].values:
             values = spec["chi_table_binning_mean"].sel(binning=name).values
             table[f"{BINNING_PREFIX}{name}_over_D3"] = values
             table[f"{BINNING_PREFIX}{name}_sem_over_D3"] = spec["chi_table_binning_sem"].sel(binning=name).values
+        reading = params.get("spectral_binning", "bin_width")
+        chosen = spec["chi_table_binning_mean"].sel(binning=reading).values
+        if np.isfinite(chosen).all():  # the configured reading applies to these cells
+            table["chiV_over_D3"] = chosen
+            table["sem_over_D3"] = spec["chi_table_binning_sem"].sel(binning=reading).values
+            table["wavevectors"] = spec["binning_count"].sel(binning=reading).values.sum(axis=0).astype(int)
+            table["bin_width_over_D"] = float(spec["binning_width"].sel(binning=reading).values.mean())
+            table["binning"] = reading
     return table
 
 
@@ -295,21 +310,28 @@ def _table_rows(rows: Rows, table_path, reference_path, number: int, inputs):
                          rounding=rounding_margin(text), exact_match=math.isinf(value),
                          reason_if_failed=reason)
     else:
-        systematic, consistent = binning_systematic(ours, published, rows.k_sigma)
-        binning_note = (f"bin conventions consistent with the paper away from the zeros of m(k): "
-                        f"{', '.join(consistent) or 'none'}")
+        reading = str(ours["binning"].iloc[0]) if "binning" in ours else "bin_width"
+        narrow = f"{BINNING_PREFIX}bin_width_over_D3"
+        second = reading != "bin_width" and narrow in ours
         for i, text_k in enumerate(published["kD"]):
             k = float(text_k)
             text = published["chiV_over_D3"].iloc[i]
+            near_zero = min(abs(k - z) for z in FORM_FACTOR_ZEROS) < ZERO_NEIGHBOURHOOD
             reason = base_reason
-            if min(abs(k - z) for z in FORM_FACTOR_ZEROS) < ZERO_NEIGHBOURHOOD:
+            if near_zero:
                 reason = ("bin next to a zero of m(k): the value depends on the paper's (unstated) "
-                          f"bin placement ({binning_note}){_eq11_note(corr, k)}; " + base_reason)
+                          f"bin placement{_eq11_note(corr, k)}; " + base_reason)
             rows.add(f"table{number}_chiV_over_D3", f"kD={text_k}", float(text),
                      float(ours["chiV_over_D3"].iloc[i]), float(ours["sem_over_D3"].iloc[i]),
                      published_err=float(published["sem_over_D3"].iloc[i]),
-                     rounding=rounding_margin(text), systematic=float(systematic[i]),
-                     reason_if_failed=reason)
+                     rounding=rounding_margin(text), reason_if_failed=reason)
+            if second:  # the second reading: our bins of table_bin_width centred on the same kD
+                rows.add(f"table{number}_chiV_over_D3_narrow_bins", f"kD={text_k}", float(text),
+                         float(ours[narrow].iloc[i]), float(ours[f"{BINNING_PREFIX}bin_width_sem_over_D3"].iloc[i]),
+                         published_err=float(published["sem_over_D3"].iloc[i]),
+                         rounding=rounding_margin(text),
+                         reason_if_failed=("second reading (bins of table_bin_width instead of one grid "
+                                           "spacing 2 pi / L): " + reason))
 
 
 def _eq11_note(corr, k: float) -> str:
@@ -327,43 +349,6 @@ def _eq11_note(corr, k: float) -> str:
 #: within which a bin's mean depends strongly on its placement
 FORM_FACTOR_ZEROS = (8.987, 15.451)
 ZERO_NEIGHBOURHOOD = 0.35
-
-
-def binning_systematic(ours: pd.DataFrame, published: pd.DataFrame, k_sigma: float):
-    """The systematic margin of each row of Table IV or V from the paper's unstated binning.
-
-    ``ours`` is our table (table_spectral: chi_V under our bins and under every other bin
-    convention of spectral.table_binnings, columns BINNING_PREFIX...), ``published`` the
-    paper's (kD, chiV_over_D3, sem_over_D3). A convention is *consistent with the paper* if,
-    on the rows farther than ZERO_NEIGHBOURHOOD from the zeros of m(k) (where every sensible
-    binning gives nearly the same mean), the median of |chi_convention - published| /
-    hypot(SEM_convention, published SEM) is at most ``k_sigma`` -- the same test a row must
-    pass. The margin of each row is the largest |chi_convention - chi_ours| over the consistent
-    conventions (0 if none besides ours, or if the table has no other conventions): the same
-    rule for every row; it is large only where the bin placement matters, next to the zeros.
-
-    Returns (margin per row, names of the consistent conventions).
-    """
-    names = [c.removeprefix(BINNING_PREFIX).removesuffix("_over_D3") for c in ours.columns
-             if c.startswith(BINNING_PREFIX) and not c.endswith("_sem_over_D3")]
-    k = published["kD"].astype(float).to_numpy()
-    value = published["chiV_over_D3"].astype(float).to_numpy()
-    error = published["sem_over_D3"].astype(float).to_numpy()
-    away = np.array([min(abs(kk - z) for z in FORM_FACTOR_ZEROS) >= ZERO_NEIGHBOURHOOD for kk in k])
-    mine = ours["chiV_over_D3"].to_numpy(float)
-    margin = np.zeros(len(k))
-    consistent = []
-    for name in names:
-        theirs = ours[f"{BINNING_PREFIX}{name}_over_D3"].to_numpy(float)
-        sem = ours[f"{BINNING_PREFIX}{name}_sem_over_D3"].to_numpy(float)
-        usable = away & np.isfinite(theirs)
-        if not usable.any():
-            continue
-        deviation = np.abs(theirs - value)[usable] / np.hypot(np.nan_to_num(sem[usable]), error[usable])
-        if np.median(deviation) <= k_sigma:
-            consistent.append(name)
-            margin = np.fmax(margin, np.nan_to_num(np.abs(theirs - mine), nan=0.0))
-    return margin, consistent
 
 
 def gaussian_radius(R, skewness, kurtosis, throws, *, threshold=GAUSSIAN_THRESHOLD,
