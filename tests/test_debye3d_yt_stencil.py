@@ -1,10 +1,9 @@
-"""d-generic shell counts of the YT construction: exact in 3D, identical to the 2D kernels."""
+"""d-generic shell counts of the YT construction (2D and 3D): exact against brute force."""
 
 import numpy as np
 import pytest
 
 from randmedia.describe.two_phase import RadialBinning
-from randmedia.generate import yeong_torquato as yt
 from randmedia.generate.yt_stencil import Stencil, apply_flips, shell_counts
 
 
@@ -21,8 +20,11 @@ def brute_force_counts(image, cutoff):
 
 
 @pytest.mark.parametrize("shape, cutoff", [((12, 13, 14), 4.5), ((11, 11, 11), 5.0),
-                                           ((9, 16, 10), 4.0), ((17, 15), 7.0)])
+                                           ((9, 16, 10), 4.0), ((17, 15), 7.0),
+                                           ((41, 41), 20.0), ((13, 14, 13), 6.4)])
 def test_shell_counts_fft_and_flips_equal_brute_force(shape, cutoff):
+    """Also with shells out to ~0.49 of the box (41^2, l_c = 20: the 2D long-range stages),
+    where a stencil's reach wraps almost all the way round."""
     rng = np.random.default_rng(sum(shape))
     image = (rng.random(shape) < 0.35).astype(np.uint8)
     stencil = Stencil(shape, cutoff)
@@ -51,32 +53,15 @@ def test_a_batch_of_swaps_gives_the_counts_of_the_new_image_3d():
     np.testing.assert_array_equal(h, shell_counts(image.reshape(shape), stencil))
 
 
-@pytest.mark.parametrize("side, cutoff", [(31, 10.0), (40, 12.5), (23, 11.0)])
-def test_two_dimensional_counts_equal_the_2d_construction_kernels(side, cutoff):
-    """Same integers as yeong_torquato's _shell_counts and _apply_flips (so the 2D
-    trajectory does not change when the construction moves onto these kernels)."""
-    rng = np.random.default_rng(side)
-    image = (rng.random(side * side) < 0.3).astype(np.uint8)
-    geometry = yt._Geometry(side, cutoff)
-    stencil = Stencil((side, side), cutoff)
-    np.testing.assert_array_equal(stencil.offsets[:, 1:], geometry.offsets)
-    np.testing.assert_array_equal(stencil.column, geometry.column)
-    reference = yt._shell_counts(image, side, geometry.offsets, geometry.column, geometry.n_columns)
-    ours = shell_counts(image.reshape(side, side), stencil)
-    np.testing.assert_array_equal(ours, reference)
-    flips = rng.integers(0, side * side, 300).astype(np.int64)
-    signs = np.where(rng.random(300) < 0.5, 1, -1).astype(np.int16)
-    yt._apply_flips(reference, side, flips, signs, 300, *geometry.runs)
-    apply_flips(ours, stencil, flips, signs)
-    np.testing.assert_array_equal(ours, reference)
-
-
 def test_column_table_by_squared_length_matches_the_bins():
     stencil = Stencil((20, 21, 22), 7.3)
     d2 = (stencil.offsets**2).sum(axis=1)
     np.testing.assert_array_equal(stencil.column_of_d2[d2], stencil.column)
     outside = np.setdiff1d(np.arange(stencil.column_of_d2.size), d2)
     assert np.all(stencil.column_of_d2[outside] == -1)
+    # clamped lookups: every displacement longer than l_c lands on the last entry, -1
+    assert stencil.d2_limit == stencil.column_of_d2.size - 1 == d2.max() + 1
+    assert stencil.column_of_d2[-1] == -1
     assert stencil.offsets.shape == (int(stencil.binning.counts[1:].sum()), 3)
 
 

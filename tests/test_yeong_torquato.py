@@ -1,6 +1,7 @@
 """Accelerated Yeong-Torquato construction: exactness, convergence, symmetry, resume."""
 
 import functools
+import hashlib
 import os
 import signal
 import subprocess
@@ -12,8 +13,8 @@ import pytest
 from conftest import SCHEMA
 from randmedia.config import load_schema
 from randmedia.describe.two_phase import s2_discrepancy, two_point_function
-from randmedia.generate.yeong_torquato import (AnnealingSchedule, ConstructionError, _Geometry,
-                                               _shell_counts, construct)
+from randmedia.generate.yeong_torquato import (AnnealingSchedule, ConstructionError, _anneal,
+                                               _Geometry, construct, tracked_target)
 from randmedia.theory.debye import debye_s2
 
 SIDE, A, CUTOFF = 48, 3.0, 12.0
@@ -29,33 +30,62 @@ def build(phi2=0.3, seed=1, side=SIDE, cutoff=CUTOFF, **kwargs):
                      **kwargs)
 
 
-def test_shell_counts_equal_brute_force():
-    geometry = _Geometry(21, 6.0)
-    image = (np.random.default_rng(0).random(21 * 21) < 0.4).astype(np.uint8)
-    h = _shell_counts(image, 21, geometry.offsets, geometry.column, geometry.n_columns)
-    grid = image.reshape(21, 21)
-    for x in (0, 5, 220, 440):
-        i, j = divmod(x, 21)
-        expected = np.zeros(geometry.n_columns, dtype=int)
-        for (di, dj), c in zip(geometry.offsets, geometry.column):
-            expected[c] += grid[(i + di) % 21, (j + dj) % 21]
-        np.testing.assert_array_equal(h[x], expected)
+# Digests of constructions made by commit e000202 (the 2D construction with its own
+# shell-count kernels, before it moved onto randmedia.generate.yt_stencil): the same seeds
+# must keep giving these images, accepted-swap counts and Delta S2 (bit-identical
+# trajectories). sha256 of the phase-2 image bytes (uint8, C order), first 16 hex digits.
+REFERENCE_CONSTRUCTIONS = [
+    # (phi2, L, l_c, seed, schedule), image digest, (trials, accepted, stages,
+    # long-range stages, long-range accepted), Delta S2, energy
+    ((0.3, 48, 12.0, 1, {}), "5168dd0b38d40914", (19320, 1018, 40, 0, 0),
+     8.65173443963703e-05, 1.4984730119141728e-07),
+    ((0.7, 60, 9.0, 3, {}), "aa36f0daa26d503f", (30240, 1617, 40, 0, 0),
+     3.2808299036966394e-05, 1.3138451380964547e-08),
+    ((0.3, 61, 8.0, 2, {"long_range_stages": 2}), "efe4ed2f359cb1fa", (32802, 1788, 40, 2, 159),
+     0.00014820924878178147, 4.033605755954557e-07),
+]
 
 
-def test_fft_shell_counts_equal_the_flip_kernel_out_to_half_the_box():
-    """_shell_counts (FFT) against every tracked pixel applied as a +1 flip by the update
-    kernel, for a shell range reaching 0.49 L (the long-range stages)."""
-    from randmedia.generate.yeong_torquato import _apply_flips
+@pytest.mark.parametrize("case, digest, counts, delta_s2, energy", REFERENCE_CONSTRUCTIONS,
+                         ids=["one-cell", "bucketed-complement", "long-range"])
+def test_same_images_as_the_reference_commit(case, digest, counts, delta_s2, energy):
+    phi2, side, cutoff, seed, schedule = case
+    result = build(phi2, seed=seed, side=side, cutoff=cutoff,
+                   schedule=AnnealingSchedule(**schedule))
+    image = np.ascontiguousarray(result.image, dtype=np.uint8)
+    assert hashlib.sha256(image.tobytes()).hexdigest()[:16] == digest
+    keys = ("trials", "accepted", "stages", "long_range_stages", "long_range_accepted")
+    assert tuple(result.stats[k] for k in keys) == counts
+    assert result.delta_s2 == pytest.approx(delta_s2, rel=1e-9)
+    assert result.energy == pytest.approx(energy, rel=1e-9)
 
-    side = 41
-    geometry = _Geometry(side, 20.0)
-    image = (np.random.default_rng(1).random(side * side) < 0.3).astype(np.uint8)
-    flips = np.zeros((side * side, geometry.n_columns), dtype=np.int16)
-    tracked = np.flatnonzero(image).astype(np.int64)
-    _apply_flips(flips, side, tracked, np.ones(tracked.size, dtype=np.int16), tracked.size,
-                 *geometry.runs)
-    np.testing.assert_array_equal(
-        _shell_counts(image, side, geometry.offsets, geometry.column, geometry.n_columns), flips)
+
+@pytest.mark.parametrize("interface_only", [False, True], ids=["all-voxels", "interface"])
+def test_three_dimensional_trials_keep_exact_counts_and_follow_the_scan(interface_only):
+    """The trial loop is d-generic: on a 3D image (4-5 pending-flip cells per axis, small
+    batches, so bucketed lookups and many flushes) the incremental shell counts and
+    S2 - target stay those of the current image, and the disk-scan baseline follows the
+    same trajectory."""
+    shape, cutoff, phi2 = (14, 15, 16), 5.0, 0.3
+    geometry = _Geometry(shape, cutoff)
+    n = int(np.prod(shape))
+    start = np.zeros(n, dtype=np.uint8)
+    start[np.random.default_rng(0).permutation(n)[:round(phi2 * n)]] = 1
+    _, target = tracked_target(debye(phi2, a=2.0), phi2, geometry.binning)
+    runs = {}
+    for scan in (False, True):
+        image = start.copy()
+        h = geometry.shell_counts(image, scan)
+        diff = geometry.s2(image)[1:] - target[1:]
+        accepted = _anneal(image, h, diff, 4000, 2e-6, interface_only, scan,
+                           np.random.default_rng(1), 16, *geometry.kernel_args())
+        runs[scan] = image, accepted
+        if not scan:
+            np.testing.assert_array_equal(h, geometry.shell_counts(image))
+        np.testing.assert_allclose(diff, geometry.s2(image)[1:] - target[1:], rtol=0, atol=1e-12)
+        assert image.sum() == round(phi2 * n)
+    np.testing.assert_array_equal(runs[False][0], runs[True][0])
+    assert runs[False][1] == runs[True][1] > 100
 
 
 def test_long_range_stages_constrain_s2_out_to_half_the_box():
@@ -103,11 +133,14 @@ def test_construction_interrupted_in_a_long_range_stage_resumes_to_the_same_imag
     assert not checkpoint.exists()
 
 
-@pytest.mark.parametrize("side, cutoff", [(SIDE, CUTOFF), (60, 9.0)], ids=["one-cell", "bucketed"])
+@pytest.mark.parametrize("side, cutoff", [(SIDE, CUTOFF), (60, 9.0), (20, 8.0)],
+                         ids=["one-cell", "bucketed", "window-near-the-ring"])
 def test_fast_and_disk_scan_constructions_are_identical(side, cutoff):
     """O(bins) trials with deferred, batched count updates (any batch size) and the O(l_c^2)
     scan follow the same trajectory to the same image. 60 / 9 px gives a 6 x 6 grid of
-    pending-flip cells (the bucketed lookup); 48 / 12 px a single cell."""
+    pending-flip cells (the bucketed lookup); 48 / 12 px a single cell; 20 / 8 px leaves 3 px
+    of the ring outside a pixel's window (7 cells of 2-3 px; the former layout, 5 cells of
+    3 px and a last one of 5 px, met that cell at both ends of a window and raised)."""
     schedule = AnnealingSchedule(trials_per_pixel=10, tolerance=1.0)
     slow = build(schedule=schedule, scan=True, side=side, cutoff=cutoff)
     for batch in (2, 7, 4096):
@@ -122,7 +155,7 @@ def test_converges_and_matches_independent_estimator(phi2):
     assert result.image.sum() == round(phi2 * SIDE * SIDE)  # phi2 exactly conserved
     assert result.delta_s2 <= 2e-4
     # the construction's S2 (FFT) equals the exact integer recount from shell counts
-    exact = _Geometry(SIDE, CUTOFF).s2(result.image.ravel())  # phase 2 is tracked for phi2 <= 1/2
+    exact = _Geometry((SIDE, SIDE), CUTOFF).s2(result.image.ravel())  # phase 2 is tracked for phi2 <= 1/2
     np.testing.assert_allclose(result.s2, exact, atol=1e-14)
     fft = two_point_function(result.image[np.newaxis], phase=1, r_max=CUTOFF)
     recomputed = s2_discrepancy(fft, debye(phi2), result.image.shape)[0]

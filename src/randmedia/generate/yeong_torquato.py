@@ -30,12 +30,25 @@ bit-identical image).
 Applying an accepted swap at once would stream ~0.8 MB of h (L = 501: 25 MB of
 int16 counts, one cache line per updated pixel) through the cache per flipped
 pixel. Instead the flips wait in a batch (per-stage size from the acceptance
-rate, :func:`_batch_for`), bucketed by coarse cells of ~l_c/2; a trial adds the
-pending flips within l_c of its two pixels to their stored counts (exact
-integers, so the trajectory is unchanged), and a full batch is applied image
-row by image row (:func:`_apply_flips`), each row's counts staying in cache.
-Measured at L = 501, l_c = 50 (``benchmarks/debye_yt.py``): a trial costs
-~0.7 us, an accepted swap ~13 us, the disk scan ~25 us per trial.
+rate, :func:`_batch_for`), bucketed by coarse cells of ~l_c/2 along each axis
+(:class:`_PendingCells`); a trial adds the pending flips within l_c of its two
+pixels to their stored counts (exact integers, so the trajectory is unchanged),
+and a full batch is applied image row by image row, each row's counts staying
+in cache. Measured at L = 501, l_c = 50 (``benchmarks/debye_yt.py``): a trial
+costs ~0.7 us, an accepted swap ~13 us, the disk scan ~25 us per trial.
+
+One implementation for 2D and 3D. The shell counts h, the stencil of
+displacements 0 < |v| <= l_c with its bin columns and the batched update are
+those of :mod:`randmedia.generate.yt_stencil` (:class:`~randmedia.generate.yt_stencil.Stencil`,
+:func:`~randmedia.generate.yt_stencil.shell_counts`,
+:func:`~randmedia.generate.yt_stencil.apply_flips_kernel`), and the trial loop
+:func:`_anneal` with its lookups (pair term and pending flips through the
+column table indexed by |v|^2, interface candidates with 2d face neighbours)
+works on an nz x ny x nx image raveled in C order, a 2D image being one layer
+(nz = 1). The 2D images are those of the former 2D-only kernels (commit e000202)
+bit for bit: the trajectory depends only on the random stream, the integer
+counts and the candidate-list order, which is kept (the 2D neighbours first).
+The driver :func:`construct` is still 2D (L x L).
 
 Phase-inversion symmetry. The kernel always tracks the minority phase
 (phase 2 when phi2 <= 1/2), the initial image and every random draw depend
@@ -60,7 +73,7 @@ image's own fluctuations (mean |S2 - target| over all bins 0 < r < L/2 of
 naming the bins). ``long_range_stages`` more interface stages at the final
 temperature, with the energy of Eq. (23) summed over every bin
 0 < r <= ``long_range_cutoff_over_L`` L, bring it to ~10^-5 at the cost of one
-shell-count table of that range (built by FFT, :func:`_shell_counts`) -- the
+shell-count table of that range (built by FFT, :func:`~randmedia.generate.yt_stencil.shell_counts`) -- the
 trial cost stays O(bins). The cutoff stops short of L/2 so that the pending-flip
 cells (:class:`_PendingCells`) stay a few pixels wide. Off by default
 (``long_range_stages = 0``); the paper config runs two.
@@ -82,8 +95,12 @@ from numba import njit
 from randmedia.describe.two_phase import RadialBinning, periodic_autocorrelation
 from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
 from randmedia.generate import refuse_invalid
+from randmedia.generate.yt_stencil import Stencil, apply_flips_kernel, shell_counts
 
-_NEIGHBOURS = np.array([[-1, 0], [1, 0], [0, -1], [0, 1]], dtype=np.int64)
+# face neighbours (dz, dy, dx) of the interface test: the 2D four first, in the order the
+# 2D construction always used (candidate-list order, hence trajectories, unchanged), then z
+_NEIGHBOURS = np.array([[0, -1, 0], [0, 1, 0], [0, 0, -1], [0, 0, 1], [-1, 0, 0], [1, 0, 0]],
+                       dtype=np.int64)
 
 
 class ConstructionError(RuntimeError):
@@ -133,154 +150,92 @@ class Construction:
 
 
 # --------------------------------------------------------------------------- kernels
+# Voxel x of an nz x ny x nx image is raveled in C order; a 2D image is one layer (nz = 1).
 
 
 @njit(cache=True, inline="always")
-def _shifted(x, side, di, dj):
-    """Index of pixel x shifted by (di, dj) on the periodic side x side lattice (|d| < side)."""
-    i = x // side + di
-    j = x % side + dj
+def _coordinates(x, shape):
+    """(z, y, x) of the raveled voxel index x."""
+    nz, ny, nx = shape
+    if nz == 1:  # 2D: no division for the layer
+        z = 0
+        rest = x
+    else:
+        z = x // (ny * nx)
+        rest = x - z * (ny * nx)
+    y = rest // nx
+    return z, y, rest - y * nx
+
+
+@njit(cache=True, inline="always")
+def _wrap(i, n):
+    """Coordinate i (-n <= i < 2n) on a periodic axis of n voxels."""
     if i < 0:
-        i += side
-    elif i >= side:
-        i -= side
-    if j < 0:
-        j += side
-    elif j >= side:
-        j -= side
-    return i * side + j
+        return i + n
+    if i >= n:
+        return i - n
+    return i
 
 
-@njit(cache=True, boundscheck=False)
-def _apply_flips(h, side, flips, signs, n_flips, run_di, run_lo, run_hi, run_dj0, run_address):
-    """Add signs[k] to h[x, column] of every pixel x within l_c of flips[k], for k < n_flips.
-
-    The stencil is stored as runs of consecutive columns dj in one stencil row di
-    (offsets in row-major order), so the pixels a run touches are consecutive in
-    memory. Flips are sorted by image row (counting sort) and applied image row by
-    image row: the shell counts of one image row (side x n_bins int16, ~50 kB at paper
-    size) stay in cache while every flip whose stencil crosses that row updates it.
-    Applied one flip at a time, each flip would stream ~0.8 MB of h through the
-    cache; batched, h streams through once per batch.
-    """
-    n_columns = h.shape[1]
-    flat = h.reshape(-1)
-    first = np.zeros(side + 1, dtype=np.int64)  # flips of image row r: order[first[r]:first[r+1]]
-    for k in range(n_flips):
-        first[flips[k] // side + 1] += 1
-    for r in range(side):
-        first[r + 1] += first[r]
-    order = np.empty(n_flips, dtype=np.int64)
-    fill = first[:side].copy()
-    for k in range(n_flips):
-        row = flips[k] // side
-        order[fill[row]] = k
-        fill[row] += 1
-    for r in range(side):
-        row_base = r * side
-        for run in range(run_di.shape[0]):
-            i0 = r - run_di[run]  # image row of the flips whose stencil run lands on row r
-            if i0 < 0:
-                i0 += side
-            elif i0 >= side:
-                i0 -= side
-            lo = run_lo[run]
-            hi = run_hi[run]
-            for e in range(first[i0], first[i0 + 1]):
-                k = order[e]
-                sign = signs[k]
-                j_first = flips[k] - i0 * side + run_dj0[run]  # image column of the run's start
-                # pixels of the run inside the row: u in [start, stop); the rest wraps around
-                start = lo + max(0, -j_first)
-                stop = min(hi, lo + side - j_first)
-                base = (row_base + j_first) * n_columns
-                for u in range(start, stop):
-                    flat[base + run_address[u]] += sign
-                for u in range(lo, start):  # wrapped on the left
-                    flat[base + side * n_columns + run_address[u]] += sign
-                for u in range(stop, hi):  # wrapped on the right
-                    flat[base - side * n_columns + run_address[u]] += sign
+@njit(cache=True, inline="always")
+def _shifted(z, y, x, dz, dy, dx, shape):
+    """Raveled index of voxel (z, y, x) shifted by (dz, dy, dx) periodically (|d| < n per axis)."""
+    nz, ny, nx = shape
+    return (_wrap(z + dz, nz) * ny + _wrap(y + dy, ny)) * nx + _wrap(x + dx, nx)
 
 
-def _stencil_runs(offsets: np.ndarray, column: np.ndarray, n_columns: int):
-    """(run_di, run_lo, run_hi, run_dj0, run_address): maximal runs of consecutive dj in one
-    stencil row of the row-major sorted ``offsets`` (the origin splits row 0 into two
-    runs), and for every stencil entry u its offset in the flattened shell counts from the
-    run's first pixel: column[u] + (u - run_lo) * n_columns."""
-    breaks = np.flatnonzero((np.diff(offsets[:, 0]) != 0) | (np.diff(offsets[:, 1]) != 1)) + 1
-    lo = np.concatenate([[0], breaks]).astype(np.int64)
-    hi = np.concatenate([breaks, [len(offsets)]]).astype(np.int64)
-    run_start = np.repeat(lo, hi - lo)
-    address = column + (np.arange(len(offsets)) - run_start) * n_columns
-    return (np.ascontiguousarray(offsets[lo, 0]), lo, hi, np.ascontiguousarray(offsets[lo, 1]),
-            address.astype(np.int64))
-
-
-def _shell_counts(image, side, offsets, column, n_columns):
-    """h[x, c] = number of tracked pixels at displacements of bin c+1 from pixel x, counted
-    from scratch: per bin, the periodic correlation of the image with the bin's shell of
-    displacements by FFT (exact after rounding: counts < 2^15, FFT error ~1e-10). Equal
-    to applying every tracked pixel as a +1 flip with :func:`_apply_flips` (tested), and
-    ~3x faster for shells out to L/2."""
-    import scipy.fft
-
-    h = np.empty((side * side, n_columns), dtype=np.int16)
-    spectrum = scipy.fft.rfft2(np.asarray(image, dtype=np.float64).reshape(side, side))
-    shell = np.zeros((side, side))
-    rows, cols = offsets[:, 0] % side, offsets[:, 1] % side
-    order = np.argsort(column, kind="stable")
-    starts = np.searchsorted(column[order], np.arange(n_columns + 1))
-    for c in range(n_columns):
-        members = order[starts[c]:starts[c + 1]]
-        shell[rows[members], cols[members]] = 1.0
-        # sum_v shell(v) I(x + v) = IFFT(FFT(I) conj(FFT(shell))); the shell is symmetric
-        counts = scipy.fft.irfft2(spectrum * np.conj(scipy.fft.rfft2(shell)), s=(side, side))
-        h[:, c] = np.rint(counts).reshape(-1)
-        shell[rows[members], cols[members]] = 0.0
-    return h
+@njit(cache=True, inline="always")
+def _minimal(d, n):
+    """Minimal periodic image of a coordinate difference d (|d| < n) on an axis of n voxels."""
+    if d > n // 2:
+        return d - n
+    if d < -(n // 2):
+        return d + n
+    return d
 
 
 @njit(cache=True)
-def _scan_counts(image, side, x, offsets, column, out):
-    """out[c] = tracked pixels at displacements of bin c+1 from x, by scanning the disk."""
+def _scan_counts(image, z, y, x, shape, offsets, column, out):
+    """out[c] = tracked voxels at displacements of bin c+1 from (z, y, x), by scanning the
+    l_c-ball (the benchmark baseline)."""
     out[:] = 0
     for k in range(offsets.shape[0]):
-        out[column[k]] += image[_shifted(x, side, offsets[k, 0], offsets[k, 1])]
+        out[column[k]] += image[_shifted(z, y, x, offsets[k, 0], offsets[k, 1], offsets[k, 2], shape)]
+
+
+@njit(cache=True, inline="always")
+def _pair_column(p_at, q_at, shape, column_of_d2):
+    """Bin column of the minimal-image displacement q - p (coordinates p_at, q_at), or -1
+    beyond l_c (``column_of_d2`` of :class:`~randmedia.generate.yt_stencil.Stencil`)."""
+    dz = _minimal(q_at[0] - p_at[0], shape[0])
+    dy = _minimal(q_at[1] - p_at[1], shape[1])
+    dx = _minimal(q_at[2] - p_at[2], shape[2])
+    return column_of_d2[min(dz * dz + dy * dy + dx * dx, column_of_d2.shape[0] - 1)]
+
+
+@njit(cache=True, inline="always")
+def _neighbour(at, n, shape):
+    """Raveled index of face neighbour n (a row of ``_NEIGHBOURS``) of the voxel at ``at``."""
+    return _shifted(at[0], at[1], at[2], _NEIGHBOURS[n, 0], _NEIGHBOURS[n, 1], _NEIGHBOURS[n, 2],
+                    shape)
 
 
 @njit(cache=True)
-def _pair_column(p, q, side, cutoff, column_table):
-    """Bin column of the minimal-image displacement q - p, or -1 beyond the cutoff."""
-    di = q // side - p // side
-    dj = q % side - p % side
-    if di > side // 2:
-        di -= side
-    elif di < -(side // 2):
-        di += side
-    if dj > side // 2:
-        dj -= side
-    elif dj < -(side // 2):
-        dj += side
-    if abs(di) > cutoff or abs(dj) > cutoff:
-        return -1
-    return column_table[di + cutoff, dj + cutoff]
-
-
-@njit(cache=True)
-def _is_candidate(image, side, x, interface_only):
-    """Can x be drawn? Every pixel, or in interface mode only those with a 4-neighbour
-    of the other phase."""
+def _is_candidate(image, x, shape, interface_only):
+    """Can x be drawn? Every voxel, or in interface mode only those with a face neighbour
+    of the other phase (2d neighbours)."""
     if not interface_only:
         return True
-    for n in range(4):
-        if image[_shifted(x, side, _NEIGHBOURS[n, 0], _NEIGHBOURS[n, 1])] != image[x]:
+    at = _coordinates(x, shape)
+    for n in range(4 if shape[0] == 1 else 6):
+        if image[_neighbour(at, n, shape)] != image[x]:
             return True
     return False
 
 
 @njit(cache=True)
-def _list_add_if_candidate(image, side, x, interface_only, members, sizes, slot):
-    if _is_candidate(image, side, x, interface_only):
+def _list_add_if_candidate(image, x, shape, interface_only, members, sizes, slot):
+    if _is_candidate(image, x, shape, interface_only):
         ph = image[x]
         members[ph, sizes[ph]] = x
         slot[x] = sizes[ph]
@@ -288,13 +243,13 @@ def _list_add_if_candidate(image, side, x, interface_only, members, sizes, slot)
 
 
 @njit(cache=True)
-def _build_lists(image, side, interface_only, members, sizes, slot):
-    """members[phase, :sizes[phase]] = candidate pixels of each phase; slot = position or -1."""
+def _build_lists(image, shape, interface_only, members, sizes, slot):
+    """members[phase, :sizes[phase]] = candidate voxels of each phase; slot = position or -1."""
     sizes[0] = 0
     sizes[1] = 0
     slot[:] = -1
-    for x in range(side * side):
-        _list_add_if_candidate(image, side, x, interface_only, members, sizes, slot)
+    for x in range(image.shape[0]):
+        _list_add_if_candidate(image, x, shape, interface_only, members, sizes, slot)
 
 
 @njit(cache=True)
@@ -308,28 +263,31 @@ def _list_remove(members, sizes, slot, ph, x):
 
 
 @njit(cache=True)
-def _refresh(image, side, x, old_phase, interface_only, members, sizes, slot):
+def _refresh(image, x, shape, old_phase, interface_only, members, sizes, slot):
     if slot[x] >= 0:
         _list_remove(members, sizes, slot, old_phase, x)
-    _list_add_if_candidate(image, side, x, interface_only, members, sizes, slot)
+    _list_add_if_candidate(image, x, shape, interface_only, members, sizes, slot)
 
 
 class _PendingCells:
-    """Coarse cells for looking up pending flips near a pixel, per image axis.
+    """Coarse cells along one image axis of ``side`` voxels, for looking up pending flips
+    near a voxel (one per axis; an axis of one voxel, z of a 2D image, has one cell).
 
-    Pixel row (or column) i lies in cell ``cell_of[i]`` (cells of ``width`` pixels, the
-    last one wider). ``near[i, :n_near[i]]`` are the cells meeting the window
-    [i - l_c, i + l_c] (periodic, each once); ``gap[i, a]`` is the distance from i to
-    the nearest pixel of cell ``near[i, a]`` in that window (cells farther than l_c in
-    both axes together are skipped) and ``shift[i, a]`` (0 or +-L) turns a row index in
-    that cell into its periodic image nearest to i.
+    Coordinate i lies in cell ``cell_of[i]`` (``count`` cells of equal width to within one
+    voxel, at most ``width``: a cell no wider than the part of the ring outside a window
+    is never met at both ends of it, while a wider last cell could be, e.g. at L = 110,
+    l_c = 50). ``near[i, :n_near[i]]`` are the cells meeting the window [i - l_c, i + l_c]
+    (periodic, each once); ``gap[i, a]`` is the distance from i to the nearest coordinate
+    of cell ``near[i, a]`` in that window (cells farther than l_c over all axes together
+    are skipped) and ``shift[i, a]`` (0 or +-side) turns a coordinate in that cell into
+    its periodic image nearest to i.
     """
 
     def __init__(self, side: int, cutoff: int, width: int):
         self.width = max(1, int(width))
-        self.count = max(1, side // self.width)
-        cell_of = np.minimum(np.arange(side) // self.width, self.count - 1)
-        window = np.arange(-cutoff, cutoff + 1)
+        self.count = -(-side // self.width)
+        cell_of = np.arange(side) * self.count // side
+        window = np.arange(-cutoff, cutoff + 1) if side > 1 else np.zeros(1, dtype=np.int64)
         near = np.full((side, self.count), -1, dtype=np.int64)
         gap = np.zeros((side, self.count), dtype=np.int64)
         shift = np.zeros((side, self.count), dtype=np.int64)
@@ -354,76 +312,90 @@ class _PendingCells:
 
 
 @njit(cache=True, inline="always")
-def _counts_now(h, x, side, cutoff, padded_table, cells, bucket_i, bucket_j, bucket_sign,
-                bucket_size, out):
-    """out[1:] = current shell counts of pixel x: the stored h[x] plus the pending (not
-    yet applied) flips within l_c, read from the buckets of the coarse cells near x.
+def _cell_of(at, cells):
+    """Pending-flip cell of the voxel at coordinates ``at`` (``cells``: one
+    :meth:`_PendingCells.arrays` per axis)."""
+    return (cells[0][1][at[0]] * cells[1][0] + cells[1][1][at[1]]) * cells[2][0] + cells[2][1][at[2]]
 
-    Branch-free inner loop: displacements are clamped to +-(l_c + 1), where
-    ``padded_table`` holds column -1, and a flip lands in out[column + 1], so flips
-    beyond l_c (or at the pixel itself) only add to the discarded out[0].
+
+@njit(cache=True, inline="always")
+def _counts_now(h, x, at, reach, column_of_d2, cells, bucket_z, bucket_y, bucket_x, bucket_sign,
+                bucket_size, out):
+    """out[1:] = current shell counts of voxel x (coordinates ``at``): the stored h[x] plus
+    the pending (not yet applied) flips within l_c, read from the buckets of the coarse
+    cells near x.
+
+    Branch-free inner loop: the squared displacement is clamped to the sentinel entry
+    of ``column_of_d2`` (column -1), and a flip lands in out[column + 1], so flips
+    beyond l_c (or at the voxel itself, column -1 too) only add to the discarded out[0].
     """
-    n_cells, cell_of, near, gap, shift, n_near = cells
+    near_z, gap_z, shift_z, n_near_z = cells[0][2], cells[0][3], cells[0][4], cells[0][5]
+    n_y, near_y, gap_y, shift_y, n_near_y = cells[1][0], cells[1][2], cells[1][3], cells[1][4], cells[1][5]
+    n_x, near_x, gap_x, shift_x, n_near_x = cells[2][0], cells[2][2], cells[2][3], cells[2][4], cells[2][5]
     for c in range(h.shape[1]):
         out[c + 1] = h[x, c]
-    i = x // side
-    j = x - i * side
-    reach = cutoff * cutoff
-    edge = cutoff + 1
-    width = 2 * edge + 1
-    for a in range(n_near[i]):
-        dy = gap[i, a]
-        row = near[i, a] * n_cells
-        origin_i = shift[i, a] - i + edge
-        for b in range(n_near[j]):
-            cell = row + near[j, b]
-            size = bucket_size[cell]
-            if size == 0:
+    z, y, xx = at
+    limit = column_of_d2.shape[0] - 1
+    for a in range(n_near_z[z]):
+        gz2 = gap_z[z, a] * gap_z[z, a]
+        layer = near_z[z, a] * n_y
+        origin_z = shift_z[z, a] - z
+        for b in range(n_near_y[y]):
+            gy2 = gz2 + gap_y[y, b] * gap_y[y, b]
+            if gy2 > reach:
                 continue
-            dx = gap[j, b]
-            if dy * dy + dx * dx > reach:
-                continue
-            origin_j = shift[j, b] - j + edge
-            for e in range(size):
-                di = min(max(bucket_i[cell, e] + origin_i, 0), 2 * edge)
-                dj = min(max(bucket_j[cell, e] + origin_j, 0), 2 * edge)
-                out[padded_table[di * width + dj] + 1] += bucket_sign[cell, e]
+            row = (layer + near_y[y, b]) * n_x
+            origin_y = shift_y[y, b] - y
+            for c in range(n_near_x[xx]):
+                cell = row + near_x[xx, c]
+                size = bucket_size[cell]
+                if size == 0:
+                    continue
+                if gy2 + gap_x[xx, c] * gap_x[xx, c] > reach:
+                    continue
+                origin_x = shift_x[xx, c] - xx
+                for e in range(size):
+                    dz = bucket_z[cell, e] + origin_z
+                    dy = bucket_y[cell, e] + origin_y
+                    dx = bucket_x[cell, e] + origin_x
+                    out[column_of_d2[min(dz * dz + dy * dy + dx * dx, limit)] + 1] += bucket_sign[cell, e]
 
 
 @njit(cache=True)
-def _anneal(image, h, diff, norm, offsets, column, column_table, cutoff, side, n_trials,
-            temperature, interface_only, scan, rng, runs, cells, batch):
-    """Run ``n_trials`` Metropolis swap trials in place; returns the number accepted.
+def _anneal(image, h, diff, n_trials, temperature, interface_only, scan, rng, batch, norm, shape,
+            offsets, column, column_of_d2, flip_arrays, cells):
+    """Run ``n_trials`` Metropolis swap trials on the energy of Eq. (23) in place; returns
+    the number accepted. The arguments after ``batch`` are :meth:`_Geometry.kernel_args`.
 
     Accepted swaps are not applied to the shell counts h at once: up to ``batch``
     flips wait in a list bucketed by coarse cells, trials add the pending flips
     within l_c to the stored counts (exact integers, so the trajectory is the same as
-    with immediate updates), and full batches are applied by :func:`_apply_flips`.
-    h is up to date when the function returns.
+    with immediate updates), and full batches are applied by
+    :func:`~randmedia.generate.yt_stencil.apply_flips_kernel`. h is up to date when the
+    function returns.
     """
     n_columns = diff.shape[0]
-    members = np.empty((2, side * side), dtype=np.int32)
+    n_voxels = image.shape[0]
+    members = np.empty((2, n_voxels), dtype=np.int32)
     sizes = np.zeros(2, dtype=np.int64)
-    slot = np.empty(side * side, dtype=np.int32)
-    _build_lists(image, side, interface_only, members, sizes, slot)
+    slot = np.empty(n_voxels, dtype=np.int32)
+    _build_lists(image, shape, interface_only, members, sizes, slot)
     hp = np.empty(n_columns + 1, dtype=np.int64)  # hp[c + 1]: count of column c; hp[0] unused
     hq = np.empty(n_columns + 1, dtype=np.int64)
-    run_di, run_lo, run_hi, run_dj0, run_address = runs
-    n_cells, cell_of = cells[0], cells[1]
-    edge = cutoff + 1
-    padded_table = np.full((2 * edge + 1) * (2 * edge + 1), -1, dtype=np.int64)
-    for a in range(2 * cutoff + 1):
-        for b in range(2 * cutoff + 1):
-            padded_table[(a + 1) * (2 * edge + 1) + b + 1] = column_table[a, b]
-    # pending flips: in order of acceptance (applied by _apply_flips) and, for the
+    nz, ny, nx = shape
+    cutoff, reach_y, run_first, run_count, run_lo, run_hi, run_dx0, run_address = flip_arrays
+    reach = cutoff * cutoff
+    n_cells = cells[0][0] * cells[1][0] * cells[2][0]
+    # pending flips: in order of acceptance (applied by apply_flips_kernel) and, for the
     # lookups, copied into per-cell buckets; a full bucket triggers an early flush
     pending = np.empty(batch, dtype=np.int64)
     signs = np.empty(batch, dtype=np.int16)
-    capacity = max(16, 4 * batch // (n_cells * n_cells))
-    bucket_i = np.empty((n_cells * n_cells, capacity), dtype=np.int32)
-    bucket_j = np.empty((n_cells * n_cells, capacity), dtype=np.int32)
-    bucket_sign = np.empty((n_cells * n_cells, capacity), dtype=np.int8)
-    bucket_size = np.zeros(n_cells * n_cells, dtype=np.int64)
+    capacity = max(16, 4 * batch // n_cells)
+    bucket_z = np.empty((n_cells, capacity), dtype=np.int32)
+    bucket_y = np.empty((n_cells, capacity), dtype=np.int32)
+    bucket_x = np.empty((n_cells, capacity), dtype=np.int32)
+    bucket_sign = np.empty((n_cells, capacity), dtype=np.int8)
+    bucket_size = np.zeros(n_cells, dtype=np.int64)
     n_pending = 0
     accepted = 0
     beta = 1.0 / temperature if temperature > 0 else np.inf
@@ -432,20 +404,22 @@ def _anneal(image, h, diff, norm, offsets, column, column_table, cutoff, side, n
             break
         p = members[1, int(rng.random() * sizes[1])]
         q = members[0, int(rng.random() * sizes[0])]
+        p_at = _coordinates(p, shape)
+        q_at = _coordinates(q, shape)
         if scan:
-            _scan_counts(image, side, p, offsets, column, hp[1:])
-            _scan_counts(image, side, q, offsets, column, hq[1:])
+            _scan_counts(image, p_at[0], p_at[1], p_at[2], shape, offsets, column, hp[1:])
+            _scan_counts(image, q_at[0], q_at[1], q_at[2], shape, offsets, column, hq[1:])
         elif n_pending == 0:
             for c in range(n_columns):
                 hp[c + 1] = h[p, c]
                 hq[c + 1] = h[q, c]
         else:
-            _counts_now(h, p, side, cutoff, padded_table, cells, bucket_i, bucket_j, bucket_sign,
-                        bucket_size, hp)
-            _counts_now(h, q, side, cutoff, padded_table, cells, bucket_i, bucket_j, bucket_sign,
-                        bucket_size, hq)
+            _counts_now(h, p, p_at, reach, column_of_d2, cells, bucket_z, bucket_y, bucket_x,
+                        bucket_sign, bucket_size, hp)
+            _counts_now(h, q, q_at, reach, column_of_d2, cells, bucket_z, bucket_y, bucket_x,
+                        bucket_sign, bucket_size, hq)
         # Delta C_b = 2 (h_q[b] - h_p[b]) - 2 [|p - q| in b]: fold the pair term into h_q
-        pair = _pair_column(p, q, side, cutoff, column_table)
+        pair = _pair_column(p_at, q_at, shape, column_of_d2)
         if pair >= 0:
             hq[pair + 1] -= 1
         d_energy = 0.0
@@ -461,35 +435,36 @@ def _anneal(image, h, diff, norm, offsets, column, column_table, cutoff, side, n
         image[p] = 0
         image[q] = 1
         if not scan:
-            cell_p = cell_of[p // side] * n_cells + cell_of[p % side]
-            cell_q = cell_of[q // side] * n_cells + cell_of[q % side]
+            cell_p = _cell_of(p_at, cells)
+            cell_q = _cell_of(q_at, cells)
             if (n_pending + 2 > batch or bucket_size[cell_p] + 2 > capacity
                     or bucket_size[cell_q] + 2 > capacity):
-                _apply_flips(h, side, pending, signs, n_pending, run_di, run_lo, run_hi, run_dj0,
-                             run_address)
+                apply_flips_kernel(h, nz, ny, nx, pending, signs, n_pending, cutoff, reach_y,
+                                   run_first, run_count, run_lo, run_hi, run_dx0, run_address)
                 n_pending = 0
                 bucket_size[:] = 0
-            for x, sign, cell in ((p, -1, cell_p), (q, 1, cell_q)):
+            for x, at, sign, cell in ((p, p_at, -1, cell_p), (q, q_at, 1, cell_q)):
                 pending[n_pending] = x
                 signs[n_pending] = sign
                 n_pending += 1
                 e = bucket_size[cell]
-                bucket_i[cell, e] = x // side
-                bucket_j[cell, e] = x % side
+                bucket_z[cell, e] = at[0]
+                bucket_y[cell, e] = at[1]
+                bucket_x[cell, e] = at[2]
                 bucket_sign[cell, e] = sign
                 bucket_size[cell] = e + 1
         # p left the tracked phase (1 -> 0), q joined it (0 -> 1)
-        _refresh(image, side, p, 1, interface_only, members, sizes, slot)
-        _refresh(image, side, q, 0, interface_only, members, sizes, slot)
+        _refresh(image, p, shape, 1, interface_only, members, sizes, slot)
+        _refresh(image, q, shape, 0, interface_only, members, sizes, slot)
         if interface_only:
-            for x in (p, q):
-                for n in range(4):
-                    y = _shifted(x, side, _NEIGHBOURS[n, 0], _NEIGHBOURS[n, 1])
-                    if y != p and y != q:
-                        _refresh(image, side, y, image[y], interface_only, members, sizes, slot)
+            for at in (p_at, q_at):
+                for n in range(4 if nz == 1 else 6):
+                    nb = _neighbour(at, n, shape)
+                    if nb != p and nb != q:
+                        _refresh(image, nb, shape, image[nb], interface_only, members, sizes, slot)
     if not scan:
-        _apply_flips(h, side, pending, signs, n_pending, run_di, run_lo, run_hi, run_dj0,
-                     run_address)
+        apply_flips_kernel(h, nz, ny, nx, pending, signs, n_pending, cutoff, reach_y, run_first,
+                           run_count, run_lo, run_hi, run_dx0, run_address)
     return accepted
 
 
@@ -497,38 +472,44 @@ def _anneal(image, h, diff, norm, offsets, column, column_table, cutoff, side, n
 
 
 class _Geometry:
-    """Bins, displacement stencil and normalization for an L x L image and cutoff l_c."""
+    """Stencil, bins, pending-flip cells and normalization for an image of ``shape``
+    (L x L, or nz x ny x nx) and cutoff l_c."""
 
-    def __init__(self, side: int, cutoff: float):
-        self.side = side
-        self.binning = RadialBinning.build((side, side), cutoff)
-        vectors = self.binning.displacements()
-        keep = self.binning.bin_of > 0
-        # row-major order of the stencil: an accepted swap then walks h almost sequentially
-        order = np.lexsort((vectors[keep][:, 1], vectors[keep][:, 0]))
-        self.offsets = np.ascontiguousarray(vectors[keep][order], dtype=np.int64)
-        self.column = np.ascontiguousarray((self.binning.bin_of[keep] - 1)[order], dtype=np.int64)
-        self.n_columns = int(self.binning.counts.size - 1)
-        self.cutoff = int(math.floor(cutoff))
-        table = np.full((2 * self.cutoff + 1, 2 * self.cutoff + 1), -1, dtype=np.int64)
-        table[self.offsets[:, 0] + self.cutoff, self.offsets[:, 1] + self.cutoff] = self.column
-        self.column_table = table
-        self.runs = _stencil_runs(self.offsets, self.column, self.n_columns)
-        # pending-flip lookup cells about l_c / 2 wide: the cells met by a pixel's
-        # l_c-disk cover about twice the disk's area (3 x 3 cells of width l_c: ~3x)
-        # (no wider than the part of the ring outside a pixel's window, so that no cell is
-        # met at both ends of it: matters only for l_c close to L/2)
-        width = min((self.cutoff + 1) // 2, side - 2 * self.cutoff - 1)
-        self.cells = _PendingCells(side, self.cutoff, width).arrays()
-        # S2_b = C_b / (N^2 n_b)
-        self.norm = 1.0 / (side * side * self.binning.counts[1:].astype(float))
+    def __init__(self, shape, cutoff: float):
+        self.stencil = Stencil(shape, cutoff)
+        self.shape = self.stencil.shape
+        self.binning = self.stencil.binning
+        self.n_columns = self.stencil.n_columns
+        self.cutoff = self.stencil.cutoff
+        # pending-flip lookup cells about l_c / 2 wide along each axis: in 2D the cells met
+        # by a pixel's l_c-disk cover about twice the disk's area (3 x 3 cells of width l_c:
+        # ~3x); no wider than the part of the ring outside a voxel's window, so that no cell
+        # is met at both ends of it (matters only for l_c close to L/2)
+        per_length = {n: _PendingCells(n, self.cutoff,
+                                       min((self.cutoff + 1) // 2, n - 2 * self.cutoff - 1)).arrays()
+                      for n in set(self.stencil.shape3)}
+        self.cells = tuple(per_length[n] for n in self.stencil.shape3)
+        # S2_b = C_b / (N^d n_b)
+        self.norm = 1.0 / (int(np.prod(self.shape)) * self.binning.counts[1:].astype(float))
+
+    def kernel_args(self) -> tuple:
+        """The arguments of :func:`_anneal` after ``batch``."""
+        s = self.stencil
+        return (self.norm, s.shape3, s.offsets, s.column, s.column_of_d2, s.kernel_arrays(),
+                self.cells)
+
+    def shell_counts(self, image_flat: np.ndarray, scan: bool = False) -> np.ndarray:
+        """Shell counts h of every voxel (:func:`~randmedia.generate.yt_stencil.shell_counts`),
+        or with ``scan`` a placeholder (the disk-scan baseline keeps none)."""
+        if scan:
+            return np.zeros((1, self.n_columns), dtype=np.int16)
+        return shell_counts(image_flat.reshape(self.shape), self.stencil)
 
     def s2(self, image_flat: np.ndarray, counts: np.ndarray | None = None) -> np.ndarray:
         """S2 of the tracked phase per bin (0..n_b), exactly, from the shell counts
         (recounted from the image unless ``counts`` are given)."""
         if counts is None:
-            counts = _shell_counts(image_flat, self.side, self.offsets, self.column,
-                                   self.n_columns)
+            counts = self.shell_counts(image_flat)
         pair_sums = (counts[image_flat == 1].astype(np.int64)).sum(axis=0)
         return np.concatenate([[image_flat.mean()], pair_sums * self.norm])
 
@@ -599,7 +580,7 @@ def construct(
         raise ValueError(f"batch must be an integer >= 2, got {batch!r}")
     _validate(phi2, side, cutoff)
     log = log or logging.getLogger(__name__)
-    geometry = _Geometry(side, cutoff)
+    geometry = _Geometry((side, side), cutoff)
     phi, target = tracked_target(target_s2, phi2, geometry.binning)
     n_pixels = side * side
     n_tracked = int(round(phi * n_pixels))
@@ -624,8 +605,7 @@ def construct(
         image = np.zeros(n_pixels, dtype=np.uint8)
         image[rng.permutation(n_pixels)[:n_tracked]] = 1
 
-    h = (_shell_counts(image, side, geometry.offsets, geometry.column, geometry.n_columns)
-         if not scan else np.zeros((1, geometry.n_columns), dtype=np.int16))
+    h = geometry.shell_counts(image, scan)
     diff = geometry.s2(image, None if scan else h)[1:] - target[1:]
     started, last_save = time.perf_counter(), time.perf_counter()
     trials_done = accepted_total = 0
@@ -636,10 +616,8 @@ def construct(
         if stage >= schedule.n_stages and delta_s2 <= schedule.tolerance:
             break
         tic = time.perf_counter()
-        accepted = _anneal(image, h, diff, geometry.norm, geometry.offsets, geometry.column,
-                           geometry.column_table, geometry.cutoff, side, trials_per_stage,
-                           temperature(stage), stage >= n_cool, scan, rng, geometry.runs,
-                           geometry.cells, stage_batch)
+        accepted = _anneal(image, h, diff, trials_per_stage, temperature(stage), stage >= n_cool,
+                           scan, rng, stage_batch, *geometry.kernel_args())
         stage += 1
         elapsed = time.perf_counter() - tic
         trials_done += trials_per_stage
@@ -658,20 +636,17 @@ def construct(
     if long_range_done < schedule.long_range_stages and (delta_s2 <= schedule.tolerance
                                                          or long_range_done > 0):
         del h
-        far = _Geometry(side, math.floor(schedule.long_range_cutoff_over_L * side))
+        far = _Geometry((side, side), math.floor(schedule.long_range_cutoff_over_L * side))
         _, far_target = tracked_target(target_s2, phi2, far.binning)
         tic = time.perf_counter()
-        h = (_shell_counts(image, side, far.offsets, far.column, far.n_columns)
-             if not scan else np.zeros((1, far.n_columns), dtype=np.int16))
+        h = far.shell_counts(image, scan)
         far_diff = far.s2(image, None if scan else h)[1:] - far_target[1:]
         log.info("long-range stages: bins 0 < r <= %d, shell counts in %.1f s, dS2 = %.3g",
                  far.cutoff, time.perf_counter() - tic, float(np.mean(np.abs(far_diff))))
         while long_range_done < schedule.long_range_stages:
             tic = time.perf_counter()
-            accepted = _anneal(image, h, far_diff, far.norm, far.offsets, far.column,
-                               far.column_table, far.cutoff, side, trials_per_stage,
-                               temperature(n_cool - 1), True, scan, rng, far.runs, far.cells,
-                               stage_batch)
+            accepted = _anneal(image, h, far_diff, trials_per_stage, temperature(n_cool - 1), True,
+                               scan, rng, stage_batch, *far.kernel_args())
             long_range_done += 1
             trials_done += trials_per_stage
             long_range_accepted += accepted

@@ -1,34 +1,32 @@
-"""d-generic shell counts of the accelerated Yeong-Torquato construction (issue 13; first
-kernels of the 3D construction planned in docs/debye3d.md).
+"""d-generic shell counts of the accelerated Yeong-Torquato construction (the 2D
+construction runs on them; the 3D one of issue 13, docs/debye3d.md, will).
 
-The construction (Ma & Torquato 2020, Sec. IV; :mod:`randmedia.generate.yeong_torquato`
-in 2D) keeps, for every voxel x, the shell counts
+The construction (Ma & Torquato 2020, Sec. IV; :mod:`randmedia.generate.yeong_torquato`)
+keeps, for every voxel x, the shell counts
 
     h_x[b] = sum_{v in bin b} I(x + v),      bins b = 1 .. n_b of the estimator
                                               (:class:`randmedia.describe.two_phase.RadialBinning`),
 
-so that a swap trial costs O(n_b) (Delta C_b = 2 (h_q[b] - h_p[b]) - 2 [|p - q| in b])
-and only an accepted swap pays for updating h within l_c of the two flipped voxels.
+so that a swap trial on the energy of Eq. (23) costs O(n_b)
+(Delta C_b = 2 (h_q[b] - h_p[b]) - 2 [|p - q| in b]) and only an accepted swap pays
+for updating h within l_c of the two flipped voxels.
 This module holds those counts for 2D and 3D images alike (a 2D image is one layer,
 nz = 1, whose stencil has dz = 0 only):
 
 * :class:`Stencil`: the displacements 0 < |v| <= l_c in (dz, dy, dx) row-major order,
   their bin columns, runs of consecutive dx per stencil line (dz, dy), and a column
-  table indexed by the squared length |v|^2 (3 l_c^2 entries; bin = rint(sqrt(|v|^2)),
-  the same float operation as RadialBinning).
+  table indexed by the squared length |v|^2 (bin = rint(sqrt(|v|^2)), the same float
+  operation as RadialBinning; ~l_c^2 entries, in L1/L2 cache where a (2 l_c + 1)^3 table
+  would not be), whose last entry -1 takes every longer displacement after a clamp.
 * :func:`shell_counts`: h from scratch by FFT, one bin at a time.
-* :func:`apply_flips`: add signs[k] to h around each flipped voxel, image line
-  (z, y) by line so that the counts of one line stay in cache while every flip
-  whose stencil crosses it updates it. Only source lines that hold flips are
-  visited: for a stencil layer dz the source lines within reach in y form one
-  contiguous (or wrapped: two) block of the line-sorted flips, so the per-batch
-  overhead is O(nz ny (2 l_c + 1)), not O(lines x runs). Measured (random flips,
-  loaded machine; docs/debye3d.md): 2.9 ns per count increment at 128^3, l_c = 32,
-  4096 flips, vs 22-25 ns voxel by voxel.
-
-In 2D the counts (integers) equal those of the 2D kernels
-(``yeong_torquato._shell_counts``, ``_apply_flips``) exactly (tested), so moving
-the 2D construction onto these kernels leaves its trajectory unchanged.
+* :func:`apply_flips` (:func:`apply_flips_kernel` for jitted callers): add
+  signs[k] to h around each flipped voxel, image line (z, y) by line so that the
+  counts of one line stay in cache while every flip whose stencil crosses it
+  updates it. Only source lines that hold flips are visited: for a stencil layer dz
+  the source lines within reach in y form one contiguous (or wrapped: two) block of
+  the line-sorted flips, so the per-batch overhead is O(nz ny (2 l_c + 1)), not
+  O(lines x runs). Measured (random flips, loaded machine; docs/debye3d.md): 2.9 ns
+  per count increment at 128^3, l_c = 32, 4096 flips, vs 22-25 ns voxel by voxel.
 """
 
 from __future__ import annotations
@@ -71,9 +69,12 @@ class Stencil:
                              f"voxels, more than int16 shell counts can hold")
         self.cutoff = int(math.floor(cutoff))
         c = self.cutoff
-        # column by squared length: bin = rint(sqrt(d2)) as in RadialBinning (bin width 1)
+        # column by squared length: bin = rint(sqrt(d2)) as in RadialBinning (bin width 1);
+        # the last entry (-1) is one past the longest displacement, so that a lookup
+        # column_of_d2[min(d2, d2_limit)] needs no branch for displacements beyond l_c
         d2 = (self.offsets**2).sum(axis=1)
-        self.column_of_d2 = np.full(3 * c * c + 1, -1, dtype=np.int64)
+        self.d2_limit = int(d2.max()) + 1
+        self.column_of_d2 = np.full(self.d2_limit + 1, -1, dtype=np.int64)
         self.column_of_d2[d2] = self.column
         # runs of consecutive dx in one stencil line (dz, dy); the origin splits line (0, 0)
         o = self.offsets
@@ -98,7 +99,7 @@ class Stencil:
         self.run_address = (self.column + (np.arange(len(o)) - run_start) * self.n_columns).astype(np.int64)
 
     def kernel_arrays(self):
-        """The arrays :func:`_apply_flips` takes, in its argument order."""
+        """The arrays :func:`apply_flips_kernel` takes after ``n_flips``, in its argument order."""
         return (self.cutoff, self.reach_y, self.run_first, self.run_count, self.run_lo, self.run_hi,
                 self.run_dx0, self.run_address)
 
@@ -132,23 +133,30 @@ def shell_counts(image: np.ndarray, stencil: Stencil) -> np.ndarray:
 
 
 @njit(cache=True, boundscheck=False)
-def _apply_flips(h, nz, ny, nx, flips, signs, n_flips, cutoff, reach_y, run_first, run_count,
-                 run_lo, run_hi, run_dx0, run_address):
+def apply_flips_kernel(h, nz, ny, nx, flips, signs, n_flips, cutoff, reach_y, run_first, run_count,
+                       run_lo, run_hi, run_dx0, run_address):
     """Add signs[k] to h[x, column] of every voxel x within the stencil of flips[k], k < n_flips
-    (see the module docstring for the loop order)."""
+    (see the module docstring for the loop order; the arrays after ``n_flips`` are
+    :meth:`Stencil.kernel_arrays`). For jitted callers; :func:`apply_flips` checks its input."""
     n_columns = h.shape[1]
     flat = h.reshape(-1)
     n_lines = nz * ny
-    first = np.zeros(n_lines + 1, dtype=np.int64)  # flips of line l: order[first[l]:first[l+1]]
+    first = np.zeros(n_lines + 1, dtype=np.int64)  # flips of line l: entries first[l]:first[l+1]
     for k in range(n_flips):
         first[flips[k] // nx + 1] += 1
     for r in range(n_lines):
         first[r + 1] += first[r]
-    order = np.empty(n_flips, dtype=np.int64)
+    # the flips sorted by line (counting sort, stable): row in its layer, column and sign, so
+    # that the loop below divides by nothing (a division per flip and line cost ~8 % in 2D)
+    sorted_y = np.empty(n_flips, dtype=np.int64)
+    sorted_x = np.empty(n_flips, dtype=np.int64)
+    sorted_sign = np.empty(n_flips, dtype=np.int16)
     fill = first[:n_lines].copy()
     for k in range(n_flips):
         line = flips[k] // nx
-        order[fill[line]] = k
+        sorted_y[fill[line]] = line % ny
+        sorted_x[fill[line]] = flips[k] - line * nx
+        sorted_sign[fill[line]] = signs[k]
         fill[line] += 1
     line_size = nx * n_columns
     for line in range(n_lines):
@@ -180,15 +188,11 @@ def _apply_flips(h, nz, ny, nx, flips, signs, n_flips, cutoff, reach_y, run_firs
                     unwrap = ny
                 else:
                     break
-                if a > b:
-                    continue
                 for e in range(first[layer + a], first[layer + b + 1]):
-                    k = order[e]
-                    sign = signs[k]
-                    y0 = flips[k] // nx - layer
-                    dy = y - (y0 + unwrap)
+                    dy = y - (sorted_y[e] + unwrap)
                     r0 = run_first[dz + cutoff, dy + cutoff]
-                    x0 = flips[k] - (layer + y0) * nx
+                    x0 = sorted_x[e]
+                    sign = sorted_sign[e]
                     for run in range(r0, r0 + run_count[dz + cutoff, dy + cutoff]):
                         lo = run_lo[run]
                         hi = run_hi[run]
@@ -215,4 +219,4 @@ def apply_flips(h: np.ndarray, stencil: Stencil, flips: np.ndarray, signs: np.nd
     if h.shape != (int(np.prod(stencil.shape)), stencil.n_columns) or h.dtype != np.int16:
         raise ValueError(f"h must be int16 of shape (n_voxels, n_columns), got {h.dtype} {h.shape}")
     nz, ny, nx = stencil.shape3
-    _apply_flips(h, nz, ny, nx, flips, signs, n, *stencil.kernel_arrays())
+    apply_flips_kernel(h, nz, ny, nx, flips, signs, n, *stencil.kernel_arrays())
