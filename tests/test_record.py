@@ -141,7 +141,7 @@ def test_only_the_paper_config_writes_the_committed_record(parsed_workflow):
 
 @pytest.fixture(scope="module")
 def quick_record(quick_run) -> Path:
-    result = run_snakemake(quick_run, "--cores", "2", "--configfile", "config/quick.yaml", "record")
+    result = run_snakemake(quick_run, "record", "--cores", "2", "--configfile", "config/quick.yaml")
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-5000:]
     return quick_run / "results" / "record"
 
