@@ -52,6 +52,7 @@ import pandas as pd
 
 from randmedia.compare import NOTE_COLUMNS
 from randmedia.io import atomic_output, write_csv
+from randmedia.report import benchmark_summary
 
 __all__ = ["PUBLISHED_VALUES", "RUN_FIELDS", "check_record", "comparison_summary", "config_sha256",
            "paper_config", "published_values", "run_info", "status_table", "write_record", "write_status"]
@@ -167,14 +168,6 @@ def _passed(comparison: pd.DataFrame) -> np.ndarray:
     return comparison["passed"].map(lambda v: str(v).strip().lower() in ("true", "1", "yes")).to_numpy(bool)
 
 
-def runtimes(benchmarks: pd.DataFrame) -> pd.DataFrame:
-    """Per rule of a merged benchmark table (randmedia.report.read_benchmarks): jobs, wall time
-    (total, largest), CPU time (total), largest peak resident memory."""
-    from randmedia.report import benchmark_summary
-
-    return benchmark_summary(benchmarks)
-
-
 def run_info(paper: str, config: Mapping, repo: Path, comparison: pd.DataFrame,
              benchmarks: pd.DataFrame, files: Iterable[str], date: _dt.datetime | None = None) -> dict:
     """The provenance ``run.json`` of ``paper``'s record (module docstring).
@@ -230,7 +223,7 @@ def write_record(folder, sources: Mapping[str, str | os.PathLike], benchmarks: p
         destination = staging / name
         destination.parent.mkdir(parents=True, exist_ok=True)
         shutil.copyfile(source, destination)
-    write_csv(runtimes(benchmarks), staging / "runtimes.csv")
+    write_csv(benchmark_summary(benchmarks), staging / "runtimes.csv")
     files = [*sources, "runtimes.csv", "run.json"]
     (staging / "run.json").write_text(json.dumps(info_for_files(files), indent=1) + "\n")
     if folder.exists():

@@ -194,10 +194,10 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
         mean_S, _, _ = spectral.bin_means(kmag, Sk, edges)
         chi.append(mean_chi), S.append(mean_S), counts.append(count), kmean.append(km)
         if table_k.size:
-            t, c, _ = spectral.centred_bin_means(kmag, chik, table_k, table_width)
-            chi_table.append(t), table_counts.append(c)
             binnings = spectral.table_binnings(table_labels, table_k, box, table_width)
             means, numbers = spectral.binned_table_values(kmag, chik, binnings)
+            own = list(binnings).index("bin_width")  # the table's own bins: table_width on table_k
+            chi_table.append(means[own]), table_counts.append(numbers[own])
             chi_binnings.append(means), binning_counts.append(numbers)
             binning_widths.append([width for _, width in binnings.values()])
         n = len(positions)
