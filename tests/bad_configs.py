@@ -37,6 +37,8 @@ FITS = ("debye2020", "fits")
 
 #: (case id, mutation, text the error message must contain)
 BAD_CONFIGS = [
+    ("results_dir_absolute", _set(("results_dir",), "/tmp/out"), "results_dir"),
+    ("results_dir_wildcard", _set(("results_dir",), "results/{paper}"), "results_dir"),
     ("L_zero", _set(DISKS + ("L",), 0), "debye2020.overlapping_disks.L"),
     ("L_negative", _set(DISKS + ("L",), -201), "debye2020.overlapping_disks.L"),
     ("L_string", _set(DISKS + ("L",), "201"), "debye2020.overlapping_disks.L"),

@@ -24,6 +24,12 @@ def quick_config(workdir: Path = REPO) -> dict:
     return load_config(workdir / "config" / "config.yaml", workdir / "config" / "quick.yaml")
 
 
+#: each configuration's results folder (config key results_dir): a quick run never writes the
+#: paper config's results/
+RESULTS_DIR = {"paper": "results", "quick": quick_config()["results_dir"]}
+QUICK_RESULTS = RESULTS_DIR["quick"]
+
+
 def assert_comparison_notes(table, notes, k_sigma: float) -> None:
     """comparison_notes.csv against its comparison.csv: the notes columns, one row per comparison
     row with the same quantity and key in the same order, a reason for every failing row and
@@ -108,6 +114,7 @@ with SnakemakeApi(OutputSettings()) as api:
             "code": None if code is None or callable(code) else [str(f) for f in code],
             "input": [str(f) for f in rule.input if isinstance(f, str)],
             "output": [str(f) for f in rule.output],
+            "log": [str(f) for f in rule.log],
             "benchmark": None if rule.benchmark is None else str(rule.benchmark),
             "report": reported,
         }

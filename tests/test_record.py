@@ -11,7 +11,7 @@ from pathlib import Path
 import pandas as pd
 import pytest
 
-from conftest import REPO, run_snakemake
+from conftest import QUICK_RESULTS, REPO, run_snakemake
 from randmedia import record
 from randmedia.compare import NOTE_COLUMNS
 
@@ -134,16 +134,16 @@ def test_only_the_paper_config_writes_the_committed_record(parsed_workflow):
     _, probes = parsed_workflow
     for paper in PAPERS:
         assert probes["paper"]["rules"][f"{paper}_record"]["output"] == [f"record/{paper}"]
-        assert probes["quick"]["rules"][f"{paper}_record"]["output"] == [f"results/record/{paper}"]
+        assert probes["quick"]["rules"][f"{paper}_record"]["output"] == [f"{QUICK_RESULTS}/record/{paper}"]
     assert probes["paper"]["rules"]["record"]["output"] == ["record/README.md"]
-    assert probes["quick"]["rules"]["record"]["output"] == ["results/record/README.md"]
+    assert probes["quick"]["rules"]["record"]["output"] == [f"{QUICK_RESULTS}/record/README.md"]
 
 
 @pytest.fixture(scope="module")
 def quick_record(quick_run) -> Path:
     result = run_snakemake(quick_run, "record", "--cores", "2", "--configfile", "config/quick.yaml")
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-5000:]
-    return quick_run / "results" / "record"
+    return quick_run / QUICK_RESULTS / "record"
 
 
 @pytest.mark.parametrize("paper", PAPERS)
@@ -151,7 +151,7 @@ def test_quick_run_record_is_consistent(quick_record, quick_run, paper):
     folder = quick_record / paper
     assert record.check_record(folder, quick_run / "config" / "reference", require_commit=False) == []
     info = json.loads((folder / "run.json").read_text())
-    figures = sorted(p.name for p in (quick_run / "results" / paper / "figures").glob("*.png"))
+    figures = sorted(p.name for p in (quick_run / QUICK_RESULTS / paper / "figures").glob("*.png"))
     assert sorted(p.name for p in (folder / "figures").glob("*.png")) == figures
     assert (folder / "tables").is_dir() and info["jobs_with_benchmark"] > 0
     assert info["cpu_seconds_summed"] > 0

@@ -14,7 +14,7 @@ from types import SimpleNamespace
 import pandas as pd
 import pytest
 
-from conftest import quick_config, run_snakemake
+from conftest import QUICK_RESULTS, RESULTS_DIR, quick_config, run_snakemake
 from randmedia import report
 from randmedia.config import load_config, validate_config
 
@@ -93,6 +93,7 @@ def test_every_figure_is_in_the_report_with_a_caption(probes, config):
     the paper's figure (or Validation), a caption file that exists; every figure of the three
     papers is among them."""
     _, parsed = probes
+    root = RESULTS_DIR[config]
     reported = set()
     for name, rule in parsed[config]["rules"].items():
         pngs = [path for path in rule["output"] if path.endswith(".png")]
@@ -100,16 +101,16 @@ def test_every_figure_is_in_the_report_with_a_caption(probes, config):
         for path in pngs:
             assert path in flags, f"rule {name}: {path} is not marked with report()"
             flag = flags[path]
-            paper = path.split("/")[1]
+            paper = Path(path).relative_to(root).parts[0]
             assert flag["category"] == paper, (name, flag)
             subcategory = "Fig. {nn}" if "{nn" in path else figure_subcategory(path)  # mrj2016_figure
             assert flag["subcategory"] == subcategory, (name, flag)
             assert flag["caption"] and Path(flag["caption"]).is_file(), (name, flag)
             reported.add(re.sub(r"\{nn,[^}]*\}", "{nn}", path))
-    expected = {f"results/debye2020/figures/fig{n:02d}.png" for n in range(1, 13)}
-    expected |= {"results/mrj2016/figures/fig{nn}.png"}
-    expected |= {f"results/sphere2019/figures/fig{n:02d}.png" for n in range(1, 9)}
-    expected |= {f"results/sphere2019/figures/fig{n:02d}_alpha_cubed.png" for n in range(5, 9)}
+    expected = {f"{root}/debye2020/figures/fig{n:02d}.png" for n in range(1, 13)}
+    expected |= {f"{root}/mrj2016/figures/fig{{nn}}.png"}
+    expected |= {f"{root}/sphere2019/figures/fig{n:02d}.png" for n in range(1, 9)}
+    expected |= {f"{root}/sphere2019/figures/fig{n:02d}_alpha_cubed.png" for n in range(5, 9)}
     assert expected <= reported, expected - reported
 
 
@@ -118,23 +119,24 @@ def test_every_table_of_a_paper_has_a_report_page(probes, config):
     """Every CSV the default target asks for is an input of its paper's report-tables rule,
     whose pages are marked with report() with an existing caption of their own."""
     _, parsed = probes
+    root = RESULTS_DIR[config]
     rules = parsed[config]["rules"]
     tables = [path for path in rules["all"]["input"] if path.endswith(".csv")
               and not path.endswith("/benchmarks.csv")]
     assert any(path.endswith("comparison_notes.csv") for path in tables)
     for paper in PAPERS:
         rule = rules[f"{paper}_report_tables"]
-        own = [path for path in tables if path.startswith(f"results/{paper}/")]
+        own = [path for path in tables if path.startswith(f"{root}/{paper}/")]
         assert {"comparison.csv"} <= {Path(path).name for path in own}
         assert set(own) <= set(rule["input"])
         pages = {flag["path"]: flag for flag in rule["report"]}
         for path in own:
-            page = f"results/{paper}/report/{Path(path).stem}.html"
+            page = f"{root}/{paper}/report/{Path(path).stem}.html"
             assert page in pages, (paper, path)
             assert pages[page]["category"] == paper and Path(pages[page]["caption"]).is_file()
             assert not pages[page]["caption"].endswith("/report/table.rst"), \
                 f"{path}: write its caption workflow/report/{paper}/{Path(path).stem}.rst"
-        assert f"results/{paper}/report/benchmarks.html" in pages
+        assert f"{root}/{paper}/report/benchmarks.html" in pages
         assert set(pages) <= set(rules["all"]["input"])
 
 
@@ -226,38 +228,38 @@ def test_report_of_the_quick_run(quick_run, tmp_path):
     results = report_data(text, "results")
     categories = report_data(text, "categories")
     assert set(categories) == set(PAPERS)
-    expected = ([f"results/debye2020/figures/fig{n:02d}.png" for n in range(1, 13)]
-                + [f"results/mrj2016/figures/fig{n:02d}.png" for n in range(1, 14)]
-                + [f"results/sphere2019/figures/fig{n:02d}.png" for n in range(1, 9)]
-                + [f"results/sphere2019/figures/fig{n:02d}_alpha_cubed.png" for n in range(5, 9)])
+    expected = ([f"{QUICK_RESULTS}/debye2020/figures/fig{n:02d}.png" for n in range(1, 13)]
+                + [f"{QUICK_RESULTS}/mrj2016/figures/fig{n:02d}.png" for n in range(1, 14)]
+                + [f"{QUICK_RESULTS}/sphere2019/figures/fig{n:02d}.png" for n in range(1, 9)]
+                + [f"{QUICK_RESULTS}/sphere2019/figures/fig{n:02d}_alpha_cubed.png" for n in range(5, 9)])
     for path in expected:
         assert path in results, path
         entry = results[path]
         assert entry["mime_type"] == "image/png" and entry["data_uri"].startswith("data:image/png")
         number = int(re.search(r"fig(\d\d)", path).group(1))
         assert re.search(rf"Fig\. {number}\b", entry["caption"]), (path, entry["caption"][:200])
-        assert path in categories[path.split("/")[1]][f"Fig. {number:02d}"]
-    tables = [p for p in (quick_run / "results").glob("*/tables/*.csv")]
-    tables += [quick_run / f"results/{paper}/comparison.csv" for paper in PAPERS]
-    tables += list((quick_run / "results").glob("*/comparison_notes.csv"))
+        assert path in categories[Path(path).relative_to(QUICK_RESULTS).parts[0]][f"Fig. {number:02d}"]
+    tables = [p for p in (quick_run / QUICK_RESULTS).glob("*/tables/*.csv")]
+    tables += [quick_run / f"{QUICK_RESULTS}/{paper}/comparison.csv" for paper in PAPERS]
+    tables += list((quick_run / QUICK_RESULTS).glob("*/comparison_notes.csv"))
     assert len(tables) >= 10
     for table in tables:
-        paper = table.relative_to(quick_run / "results").parts[0]
-        page = f"results/{paper}/report/{table.stem}.html"
+        paper = table.relative_to(quick_run / QUICK_RESULTS).parts[0]
+        page = f"{QUICK_RESULTS}/{paper}/report/{table.stem}.html"
         assert page in results and results[page]["mime_type"] == "text/html", page
         assert results[page]["caption"].strip(), page
-    comparison = (quick_run / "results/mrj2016/report/comparison.html").read_text()
-    notes = pd.read_csv(quick_run / "results/mrj2016/comparison_notes.csv")
+    comparison = (quick_run / QUICK_RESULTS / "mrj2016/report/comparison.html").read_text()
+    notes = pd.read_csv(quick_run / QUICK_RESULTS / "mrj2016/comparison_notes.csv")
     assert "rows pass" in comparison
     for reason in notes.loc[notes["reason"].fillna("") != "", "reason"].head(3):
         assert reason.split(" ")[0] in comparison
     description = report_data(text, "workflow_desc")
     assert "Parameters of this run" in description and "mrj_large" in description
     for paper in PAPERS:
-        merged = pd.read_csv(quick_run / f"results/{paper}/benchmarks.csv")
+        merged = pd.read_csv(quick_run / f"{QUICK_RESULTS}/{paper}/benchmarks.csv")
         files = sorted(p.relative_to(quick_run).as_posix()
-                       for p in (quick_run / f"results/{paper}/benchmarks").glob("*.tsv"))
+                       for p in (quick_run / f"{QUICK_RESULTS}/{paper}/benchmarks").glob("*.tsv"))
         assert sorted(merged["file"]) == files and len(files) >= 10
         assert (merged["s"] >= 0).all() and (merged["max_rss"] > 0).all()
         assert merged["rule"].str.contains(rf"^{paper}_fig|^{paper}_figure$").any()
-        assert f"results/{paper}/report/benchmarks.html" in results
+        assert f"{QUICK_RESULTS}/{paper}/report/benchmarks.html" in results

@@ -18,7 +18,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import REPO, copy_workflow, probe_rules, run_snakemake
+from conftest import REPO, RESULTS_DIR, copy_workflow, probe_rules, run_snakemake
 from randmedia.workflow_sources import SourceError, script_sources
 
 PACKAGE = REPO / "src" / "randmedia"
@@ -183,6 +183,27 @@ def test_wildcard_constraints_are_on_the_rules(parsed, config):
     for name in ("mrj2016_describe", "mrj2016_describe_chunk"):
         assert "{system,overlapping|fcc|bcc|equilibrium|mrj|mrj_large}" in rules[name]["output"][0]
     assert "{system,mrj|mrj_large}" in rules["mrj2016_jammed_packing"]["output"][0]
+
+
+@pytest.mark.workflow
+def test_each_config_writes_only_its_own_results_folder(parsed):
+    """Every output, log and benchmark of the quick config lies under its results_dir
+    (results/quick/), and none of the paper config's does: a quick run in a checkout holding
+    paper-config results cannot replace (Snakemake deletes a job's outputs before it runs) or
+    touch them. The paper config writes under results/ and the committed record/ only."""
+    quick, paper = RESULTS_DIR["quick"], RESULTS_DIR["paper"]
+    assert quick.startswith(f"{paper}/") and quick != paper
+    counted = 0
+    for config, own, allowed in (("quick", quick, (f"{quick}/",)),
+                                 ("paper", paper, (f"{paper}/", "record/"))):
+        for name, rule in parsed[1][config]["rules"].items():
+            paths = [*rule["output"], *rule["log"], *([rule["benchmark"]] if rule["benchmark"] else [])]
+            for path in paths:
+                counted += 1
+                assert path.startswith(allowed), (config, name, path)
+                if config == "paper":
+                    assert not path.startswith(f"{quick}/"), (name, path)
+    assert counted > 300
 
 
 @pytest.mark.workflow

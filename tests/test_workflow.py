@@ -18,7 +18,7 @@ import pytest
 import yaml
 
 from bad_configs import BAD_CONFIGS, bad_config
-from conftest import copy_workflow, quick_config, run_snakemake, snakemake_command
+from conftest import QUICK_RESULTS, copy_workflow, quick_config, run_snakemake, snakemake_command
 from randmedia.compare import COLUMNS, UPPER_BOUND_NOTE, judged_deviation
 from randmedia.io import PROVENANCE_ATTRS, read_dataset
 
@@ -26,24 +26,24 @@ pytestmark = pytest.mark.workflow
 
 QUICK = ("--configfile", "config/quick.yaml")
 EXPECTED_OUTPUTS = [
-    "results/debye2020/comparison.csv",
-    "results/debye2020/validation/overlapping_disks_S2.pdf",
-    "results/debye2020/validation/overlapping_disks_S2.png",
-    "results/debye2020/descriptors/overlapping_disks_phi0.3_S2.nc",
-    "results/debye2020/tables/numbers.csv",
-    "results/debye2020/fits/lineal_path.nc",
-] + [f"results/debye2020/figures/fig{n:02d}.{ext}" for n in (1, 2, 6, 7) for ext in ("pdf", "png")]
+    f"{QUICK_RESULTS}/debye2020/comparison.csv",
+    f"{QUICK_RESULTS}/debye2020/validation/overlapping_disks_S2.pdf",
+    f"{QUICK_RESULTS}/debye2020/validation/overlapping_disks_S2.png",
+    f"{QUICK_RESULTS}/debye2020/descriptors/overlapping_disks_phi0.3_S2.nc",
+    f"{QUICK_RESULTS}/debye2020/tables/numbers.csv",
+    f"{QUICK_RESULTS}/debye2020/fits/lineal_path.nc",
+] + [f"{QUICK_RESULTS}/debye2020/figures/fig{n:02d}.{ext}" for n in (1, 2, 6, 7) for ext in ("pdf", "png")]
 
 
 def netcdf_files(workdir: Path) -> list[Path]:
-    return sorted((workdir / "results").rglob("*.nc"))
+    return sorted((workdir / QUICK_RESULTS).rglob("*.nc"))
 
 
 def _result_tables(root: Path) -> list[Path]:
-    """The CSV files under root/results, without results/record/ (a copy of the others with
-    run times, made only when a test asks for the record: tests/test_record.py)."""
-    return sorted(p.relative_to(root) for p in (root / "results").rglob("*.csv")
-                  if p.relative_to(root / "results").parts[0] != "record")
+    """The CSV files of the quick run under root, without its record/ (a copy of the others
+    with run times, made only when a test asks for the record: tests/test_record.py)."""
+    return sorted(p.relative_to(root) for p in (root / QUICK_RESULTS).rglob("*.csv")
+                  if p.relative_to(root / QUICK_RESULTS).parts[0] != "record")
 
 
 def assert_same_data(first: Path, second: Path) -> None:
@@ -91,7 +91,7 @@ def test_bad_config_stops_before_any_job(tmp_path, case_id, mutation, key):
 def test_quick_run_produces_every_target(quick_run):
     for relative in EXPECTED_OUTPUTS:
         assert (quick_run / relative).stat().st_size > 0, relative
-    samples = sorted((quick_run / "results/debye2020/overlapping_disks/phi0.3").glob("sample*.nc"))
+    samples = sorted((quick_run / f"{QUICK_RESULTS}/debye2020/overlapping_disks/phi0.3").glob("sample*.nc"))
     assert len(samples) == 8
     for path in netcdf_files(quick_run):
         ds = read_dataset(path)
@@ -104,14 +104,14 @@ def test_quick_media_converged_and_recorded(quick_run):
     """Every constructed medium records Delta S2 <= tolerance, and the describe step agrees."""
     media = quick_config(quick_run)["debye2020"]["media"]
     for phi2 in media["phi2"]:
-        s2 = read_dataset(quick_run / f"results/debye2020/descriptors/media_phi{phi2:g}_S2.nc")
+        s2 = read_dataset(quick_run / f"{QUICK_RESULTS}/debye2020/descriptors/media_phi{phi2:g}_S2.nc")
         for k in range(media["n_samples"]):
-            sample = read_dataset(quick_run / f"results/debye2020/media/phi{phi2:g}/sample{k}.nc")
+            sample = read_dataset(quick_run / f"{QUICK_RESULTS}/debye2020/media/phi{phi2:g}/sample{k}.nc")
             assert sample["phase"].dtype == np.uint8
             assert sample["phase"].values.sum() == round(phi2 * media["L"] ** 2)
             assert 0 < sample.attrs["delta_S2"] <= media["schedule"]["tolerance"]
             assert sample.attrs["delta_S2"] == pytest.approx(s2["delta_S2"].values[k], abs=1e-12)
-    numbers = pd.read_csv(quick_run / "results/debye2020/tables/numbers.csv")
+    numbers = pd.read_csv(quick_run / f"{QUICK_RESULTS}/debye2020/tables/numbers.csv")
     construction = numbers[numbers["quantity"].str.startswith("mean_abs_S2_discrepancy")
                            | numbers["quantity"].isin(["L_w", "R2_over_R"])]
     assert set(construction["phi2"]) == set(media["phi2"]) and len(construction) == 4 * len(media["phi2"])
@@ -120,7 +120,7 @@ def test_quick_media_converged_and_recorded(quick_run):
 def test_quick_comparison_table(quick_run):
     """Table-comparison test: estimators on overlapping disks against the exact Eqs. (32)-(33),
     (38) and (20) within 3 SEM (+ stated margins), and <R^2>/<R> against the quoted 0.94 +- 0.04."""
-    table = pd.read_csv(quick_run / "results/debye2020/comparison.csv")
+    table = pd.read_csv(quick_run / f"{QUICK_RESULTS}/debye2020/comparison.csv")
     assert tuple(table.columns) == COLUMNS
     # quality bounds (Delta S2) pass below the published value; every other row is two-sided
     upper = table["key"].str.endswith(UPPER_BOUND_NOTE)
@@ -168,7 +168,7 @@ def test_killed_run_leaves_no_partial_output_and_rerun_completes(quick_run, tmp_
     proc = subprocess.Popen(snakemake_command("--cores", "1", *QUICK), cwd=workdir, env=env,
                             stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
                             start_new_session=True)
-    sample_dir = workdir / "results/debye2020/overlapping_disks/phi0.3"
+    sample_dir = workdir / f"{QUICK_RESULTS}/debye2020/overlapping_disks/phi0.3"
     deadline = time.time() + 300
     while time.time() < deadline and len(list(sample_dir.glob("sample*.nc"))) < 2:
         time.sleep(0.05)

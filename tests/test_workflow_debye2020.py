@@ -8,7 +8,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from conftest import assert_comparison_notes
+from conftest import QUICK_RESULTS, assert_comparison_notes
 from conftest import quick_config as load_quick_config
 from randmedia.compare import COLUMNS, judged_deviation
 from randmedia.io import read_dataset
@@ -17,15 +17,15 @@ pytestmark = pytest.mark.workflow
 
 #: outputs of debye2020 beyond those test_workflow.EXPECTED_OUTPUTS lists
 EXPECTED_OUTPUTS_DEBYE2020 = [
-    "results/debye2020/fits/surface_pores.nc",
-    "results/debye2020/comparison_notes.csv",
-    "results/debye2020/validation/overlapping_disks_level_set.pdf",
-    "results/debye2020/validation/overlapping_disks_level_set.png",
-    "results/debye2020/descriptors/overlapping_disks_phi0.3_surface.nc",
-    "results/debye2020/descriptors/overlapping_disks_phi0.3_pores.nc",
-] + [f"results/debye2020/descriptors/media_phi{phi:g}_{kind}.nc"
+    f"{QUICK_RESULTS}/debye2020/fits/surface_pores.nc",
+    f"{QUICK_RESULTS}/debye2020/comparison_notes.csv",
+    f"{QUICK_RESULTS}/debye2020/validation/overlapping_disks_level_set.pdf",
+    f"{QUICK_RESULTS}/debye2020/validation/overlapping_disks_level_set.png",
+    f"{QUICK_RESULTS}/debye2020/descriptors/overlapping_disks_phi0.3_surface.nc",
+    f"{QUICK_RESULTS}/debye2020/descriptors/overlapping_disks_phi0.3_pores.nc",
+] + [f"{QUICK_RESULTS}/debye2020/descriptors/media_phi{phi:g}_{kind}.nc"
      for phi in (0.1, 0.2, 0.3, 0.4, 0.5) for kind in ("surface", "pores")] + [
-    f"results/debye2020/figures/fig{n:02d}.{ext}" for n in (3, 4, 5, 8, 9, 10, 11, 12)
+    f"{QUICK_RESULTS}/debye2020/figures/fig{n:02d}.{ext}" for n in (3, 4, 5, 8, 9, 10, 11, 12)
     for ext in ("pdf", "png")]
 
 
@@ -36,7 +36,7 @@ def quick_config(quick_run):
 
 @pytest.fixture(scope="module")
 def table(quick_run):
-    return pd.read_csv(quick_run / "results/debye2020/comparison.csv")
+    return pd.read_csv(quick_run / f"{QUICK_RESULTS}/debye2020/comparison.csv")
 
 
 def test_quick_run_produces_every_debye2020_output(quick_run):
@@ -49,7 +49,7 @@ def test_level_sets_are_tuned_to_the_exact_specific_surface(quick_run, quick_con
     (n_tune >= n_samples in the quick config, so the tuned ensemble is the whole ensemble)."""
     paths = [f"media_phi{phi:g}" for phi in quick_config["media"]["phi2"]] + ["overlapping_disks_phi0.3"]
     for name in paths:
-        ds = read_dataset(quick_run / f"results/debye2020/descriptors/{name}_surface.nc")
+        ds = read_dataset(quick_run / f"{QUICK_RESULTS}/debye2020/descriptors/{name}_surface.nc")
         s = ds["s_samples"].values
         assert abs(s.mean() - ds.attrs["s_exact"]) <= 1e-3 * ds.attrs["s_exact"], name
         assert ds.attrs["sigma"] > 0 and ds.attrs["level_set_model"] == "pixels"
@@ -69,7 +69,7 @@ def test_comparison_notes_follow_the_comparison_rows(quick_run, table):
     tolerance, a reason for every failing row (the quick config's parameter rows: its own)."""
     from randmedia.compare.debye2020 import REASON_PARAMETER
 
-    notes = pd.read_csv(quick_run / "results/debye2020/comparison_notes.csv")
+    notes = pd.read_csv(quick_run / f"{QUICK_RESULTS}/debye2020/comparison_notes.csv")
     assert_comparison_notes(table, notes, load_quick_config(quick_run)["comparison"]["k_sigma"])
     parameters = table["quantity"].isin(["length_scale_a", "cutoff_lc", "system_size_L", "realizations_per_phi2"])
     assert (notes.loc[parameters & ~table["passed"], "reason"] == REASON_PARAMETER).all()
@@ -121,7 +121,7 @@ def test_overlapping_disk_validation_rows(table):
 
 
 def test_fits_and_numbers_are_complete(quick_run, quick_config):
-    fits = read_dataset(quick_run / "results/debye2020/fits/surface_pores.nc")
+    fits = read_dataset(quick_run / f"{QUICK_RESULTS}/debye2020/fits/surface_pores.nc")
     phi2 = quick_config["media"]["phi2"]
     assert sorted(fits["phi2"].values) == sorted(phi2)
     for name in ("F_sv_chi2_per_dof", "F_ss_chi2_per_dof", "p1", "p1_sem", "mean_delta",
@@ -133,7 +133,7 @@ def test_fits_and_numbers_are_complete(quick_run, quick_config):
     # the Euler-characteristic formula vanishes at phi2 = 1/2 and is positive below
     formula = fits["euler_formula"].values
     assert formula[np.argmin(np.abs(fits["phi2"].values - 0.5))] == pytest.approx(0.0, abs=1e-15)
-    numbers = pd.read_csv(quick_run / "results/debye2020/tables/numbers.csv")
+    numbers = pd.read_csv(quick_run / f"{QUICK_RESULTS}/debye2020/tables/numbers.csv")
     for quantity in ("p1", "p1_coefficient_c1", "eq28_rel_error", "euler_slope", "F_sv_chi2_per_dof",
                      "percolation_threshold_phi2", "overlapping_disks_phi0.3: sigma"):
         assert quantity in set(numbers["quantity"]), quantity

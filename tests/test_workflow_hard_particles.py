@@ -12,7 +12,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from conftest import quick_config, run_snakemake
+from conftest import QUICK_RESULTS, quick_config, run_snakemake
 from randmedia.compare import COLUMNS
 from randmedia.generate import PARTICLE_CONFIG, PHASE_IMAGE
 from randmedia.generate.disks import digitize_disks
@@ -39,7 +39,7 @@ def test_hard_disk_images(hard_particles_run):
     n_disks = round(section["phi2"] * side**2 / (np.pi * radius**2))
     spec = {**PHASE_IMAGE, "position": VariableSpec(("particle", "xyz"), "pixel"),
             "box": VariableSpec(("xyz", "vec"), "pixel")}
-    folder = workdir / f"results/debye2020/hard_disks/phi{section['phi2']:g}"
+    folder = workdir / f"{QUICK_RESULTS}/debye2020/hard_disks/phi{section['phi2']:g}"
     assert len(list(folder.glob("sample*.nc"))) == n_samples
     for k in range(n_samples):
         ds = read_dataset(folder / f"sample{k}.nc", spec, attrs=["phi2", "radius", "L", "sample"])
@@ -52,17 +52,17 @@ def test_hard_disk_images(hard_particles_run):
                                       digitize_disks(positions, radius, (side, side)))
         assert ds.attrs["msd_since_previous"] >= section["mc"]["sample_msd"]
         assert ds.attrs["phi2_digitized"] == pytest.approx(ds["phase"].values.mean())
-    comparison = pd.read_csv(workdir / "results/debye2020/validation/hard_disks_comparison.csv")
+    comparison = pd.read_csv(workdir / f"{QUICK_RESULTS}/debye2020/validation/hard_disks_comparison.csv")
     assert tuple(comparison.columns) == COLUMNS and comparison["passed"].all(), comparison
     for name in ("eos.pdf", "eos.png", "diagnostics.csv"):
-        assert (workdir / f"results/debye2020/validation/hard_disks_{name}").stat().st_size > 0
+        assert (workdir / f"{QUICK_RESULTS}/debye2020/validation/hard_disks_{name}").stat().st_size > 0
 
 
 def test_liquid_samples(hard_particles_run):
     workdir, config = hard_particles_run
     section = config["mrj2016"]["equilibrium"]
     n_samples = section["n_chains"] * section["samples_per_chain"]
-    folder = workdir / "results/mrj2016/configs/equilibrium"
+    folder = workdir / f"{QUICK_RESULTS}/mrj2016/configs/equilibrium"
     assert len(list(folder.glob("sample*.nc"))) == n_samples
     assert not list(folder.glob(".*checkpoint*"))  # removed after a finished chain
     for k in range(n_samples):
@@ -76,10 +76,10 @@ def test_liquid_samples(hard_particles_run):
         assert ds.attrs["msd_since_previous"] >= section["mc"]["sample_msd"]
         assert ds.attrs["global_q6"] < 0.1 and ds.attrs["crystalline_fraction"] < 0.05
         assert abs(ds.attrs["acceptance"] - section["mc"]["target_acceptance"]) < 0.05
-    frame = pd.read_csv(workdir / "results/mrj2016/validation/equilibrium_diagnostics.csv")
+    frame = pd.read_csv(workdir / f"{QUICK_RESULTS}/mrj2016/validation/equilibrium_diagnostics.csv")
     z = frame["reduced_pressure"]
     expected = compressibility_factor(section["phi"], 3, section["eos"])
     # 4 samples of 500 spheres: SEM ~0.3 %; the acceptance criterion is 1 %
     assert z.mean() == pytest.approx(expected, rel=0.01)
-    comparison = pd.read_csv(workdir / "results/mrj2016/validation/equilibrium_comparison.csv")
+    comparison = pd.read_csv(workdir / f"{QUICK_RESULTS}/mrj2016/validation/equilibrium_comparison.csv")
     assert comparison["passed"].all(), comparison

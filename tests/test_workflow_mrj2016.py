@@ -6,13 +6,13 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from conftest import assert_comparison_notes, quick_config
+from conftest import QUICK_RESULTS, assert_comparison_notes, quick_config
 from randmedia.compare import COLUMNS, judged_deviation
 from randmedia.io import read_dataset
 
 pytestmark = pytest.mark.workflow
 
-RESULTS = "results/mrj2016"
+RESULTS = f"{QUICK_RESULTS}/mrj2016"
 REFERENCE = "config/reference"
 
 

@@ -6,7 +6,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from conftest import quick_config, run_snakemake
+from conftest import QUICK_RESULTS, quick_config, run_snakemake
 from randmedia.describe import jamming
 from randmedia.generate import PARTICLE_CONFIG
 from randmedia.io import read_dataset
@@ -20,7 +20,7 @@ def jammed_run(quick_run):
     """The quick run with the MRJ packings. Until mrj2016.smk puts JAMMED_TARGETS into
     MRJ2016_TARGETS (hence into `all`), the named target mrj2016_jammed is built here in the
     same working folder (only its own jobs run); afterwards this is a no-op."""
-    if not (quick_run / "results/mrj2016/packings.csv").exists():
+    if not (quick_run / f"{QUICK_RESULTS}/mrj2016/packings.csv").exists():
         result = run_snakemake(quick_run, "mrj2016_jammed", "--cores", "2", "--configfile",
                                "config/quick.yaml")
         assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-5000:]
@@ -33,7 +33,7 @@ def section(jammed_run):
 
 
 def packing_files(workdir, section):
-    return [(system, k, workdir / f"results/mrj2016/configs/{system}/sample{k}.nc")
+    return [(system, k, workdir / f"{QUICK_RESULTS}/mrj2016/configs/{system}/sample{k}.nc")
             for system in ("mrj", "mrj_large") for k in range(section[system]["n_samples"])]
 
 
@@ -65,7 +65,7 @@ def test_packings_follow_the_contract_and_are_jammed(jammed_run, section):
 
 
 def test_packings_table_matches_the_files(jammed_run, section):
-    table = pd.read_csv(jammed_run / "results/mrj2016/packings.csv")
+    table = pd.read_csv(jammed_run / f"{QUICK_RESULTS}/mrj2016/packings.csv")
     for system in ("mrj", "mrj_large"):
         rows = table[(table["system"] == system) & ~table["sample"].isin(["mean", "sem"])]
         assert len(rows) == section[system]["n_samples"]

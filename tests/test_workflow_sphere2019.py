@@ -7,7 +7,7 @@ import numpy as np
 import pandas as pd
 import pytest
 
-from conftest import assert_comparison_notes, quick_config
+from conftest import QUICK_RESULTS, assert_comparison_notes, quick_config
 from randmedia.compare import COLUMNS, judged_deviation
 from randmedia.describe.sphere_points import CAP_VARIANCE
 from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of
@@ -31,13 +31,13 @@ def test_every_sphere2019_target_exists(quick):
     outputs += [f"figures/fig{n:02d}.{ext}" for n in range(1, 9) for ext in ("pdf", "png")]
     outputs += [f"figures/fig{n:02d}_alpha_cubed.{ext}" for n in range(5, 9) for ext in ("pdf", "png")]
     for relative in outputs:
-        assert (workdir / "results/sphere2019" / relative).stat().st_size > 0, relative
+        assert (workdir / f"{QUICK_RESULTS}/sphere2019" / relative).stat().st_size > 0, relative
 
 
 @pytest.mark.parametrize("system", SYSTEMS)
 def test_configuration_files_follow_the_contract(quick, system):
     workdir, section = quick
-    ds = read_dataset(workdir / f"results/sphere2019/configs/{system}.nc", SPHERE_CONFIG, attrs=["R"])
+    ds = read_dataset(workdir / f"{QUICK_RESULTS}/sphere2019/configs/{system}.nc", SPHERE_CONFIG, attrs=["R"])
     assert all(key in ds.attrs for key in PROVENANCE_ATTRS)
     assert ds["position"].dims == ("frame", "particle", "xyz")
     for name in ds.variables:
@@ -57,8 +57,8 @@ def test_configuration_files_follow_the_contract(quick, system):
 def test_table1_and_comparison_rows(quick):
     workdir, section = quick
     reference = pd.read_csv(workdir / "config/reference/sphere2019_table1_exponents.csv")
-    table = pd.read_csv(workdir / "results/sphere2019/tables/table1.csv")
-    comparison = pd.read_csv(workdir / "results/sphere2019/comparison.csv")
+    table = pd.read_csv(workdir / f"{QUICK_RESULTS}/sphere2019/tables/table1.csv")
+    comparison = pd.read_csv(workdir / f"{QUICK_RESULTS}/sphere2019/comparison.csv")
     # every published entry once as printed; U_dd (R = 15), alpha = 3 and 6 at R = 5 also in
     # their second readings
     assert len(table) == len(comparison) == len(reference) + 3
@@ -89,12 +89,12 @@ def test_comparison_notes_follow_the_comparison_rows(quick):
     from randmedia.compare.sphere2019 import FAILURE_REASONS
 
     workdir, section = quick
-    comparison = pd.read_csv(workdir / "results/sphere2019/comparison.csv")
-    notes = pd.read_csv(workdir / "results/sphere2019/comparison_notes.csv")
+    comparison = pd.read_csv(workdir / f"{QUICK_RESULTS}/sphere2019/comparison.csv")
+    notes = pd.read_csv(workdir / f"{QUICK_RESULTS}/sphere2019/comparison_notes.csv")
     assert_comparison_notes(comparison, notes, quick_config(workdir)["comparison"]["k_sigma"])
     exponents = (comparison["quantity"] == "number_variance_exponent_delta").to_numpy()
     assert (notes.loc[exponents, "rounding"] == section["fit"]["rounding_margin"]).all()
-    table = pd.read_csv(workdir / "results/sphere2019/tables/table1.csv")
+    table = pd.read_csv(workdir / f"{QUICK_RESULTS}/sphere2019/tables/table1.csv")
     reasons = notes["reason"].astype(object).fillna("")
     for system, passed, reason in zip(table["system"], comparison["passed"], reasons):
         assert reason == ("" if passed else FAILURE_REASONS.get(system, "not identified")), system
@@ -104,7 +104,7 @@ def test_quick_table_entries_with_known_answers(quick):
     """Poisson: sigma^2/(<rho> s) = 1 (Eq. 7) and uniform: delta = 2 (Eq. 6, sigma^2 = rho pi a^2)
     within 3 x their fit uncertainty; the two lattices within the stated 0.15 of delta = 1."""
     workdir, _ = quick
-    table = pd.read_csv(workdir / "results/sphere2019/tables/table1.csv").set_index("system")
+    table = pd.read_csv(workdir / f"{QUICK_RESULTS}/sphere2019/tables/table1.csv").set_index("system")
     poisson = table.loc["poisson"]
     assert abs(poisson["scaled_variance_mean"] - 1.0) <= 3 * poisson["scaled_variance_mean_err"]
     uniform = table.loc["uniform"]
@@ -118,7 +118,7 @@ def test_descriptors_two_variants_agree_for_the_fluids(quick):
     sigma^2(a): their difference is within a few combined standard errors."""
     workdir, section = quick
     for system in section["fluids"]["systems"]:
-        ds = read_dataset(workdir / f"results/sphere2019/descriptors/{system}.nc", CAP_VARIANCE)
+        ds = read_dataset(workdir / f"{QUICK_RESULTS}/sphere2019/descriptors/{system}.nc", CAP_VARIANCE)
         sigma2, sem = ds["sigma2"].values, ds["sigma2_sem"].values
         z = np.abs(sigma2[0] - sigma2[1]) / np.hypot(sem[0], sem[1])
         assert np.median(z) < 2.0 and z.max() < 5.0, (system, z)
@@ -126,7 +126,7 @@ def test_descriptors_two_variants_agree_for_the_fluids(quick):
 
 def test_monte_carlo_runs_are_recorded(quick):
     workdir, section = quick
-    runs = pd.read_csv(workdir / "results/sphere2019/tables/mc_runs.csv").set_index("system")
+    runs = pd.read_csv(workdir / f"{QUICK_RESULTS}/sphere2019/tables/mc_runs.csv").set_index("system")
     assert set(section["fluids"]["systems"]) == set(runs.index)
     target = section["fluids"]["target_acceptance"]
     assert (abs(runs["acceptance_production"] - target) < 0.15).all()

@@ -12,10 +12,10 @@ REPO=$(pwd)
 PYTHON=${PYTHON:-$REPO/.venv/bin/python}
 WORK=$(mktemp -d /tmp/randmedia-slurm-check.XXXXXX)
 TARGETS=(
-    results/debye2020/descriptors/media_phi0.3_S2.nc   # two Debye constructions + S2
-    results/sphere2019/descriptors/uddpar_a3_R5.nc     # a Monte Carlo fluid + cap statistics
-    results/mrj2016/configs/mrj/sample0.nc             # a strictly jammed packing (N = 100)
-    results/mrj2016/configs/overlapping/sample0.nc     # overlapping spheres
+    results/quick/debye2020/descriptors/media_phi0.3_S2.nc   # two Debye constructions + S2
+    results/quick/sphere2019/descriptors/uddpar_a3_R5.nc     # a Monte Carlo fluid + cap statistics
+    results/quick/mrj2016/configs/mrj/sample0.nc             # a strictly jammed packing (N = 100)
+    results/quick/mrj2016/configs/overlapping/sample0.nc     # overlapping spheres
 )
 export SLURM_STATE=$WORK/slurm
 

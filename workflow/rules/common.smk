@@ -14,6 +14,17 @@ os.environ.setdefault("NUMBA_CACHE_DIR", str(Path(".cache/numba").resolve()))
 
 PACKAGE_DIR = Path(workflow.basedir) / "src" / "randmedia"
 
+#: where this run's outputs go (config key ``results_dir``): results/ for the paper config,
+#: results/quick/ for config/quick.yaml, so that a quick run never replaces (deletes) hours of
+#: paper-config outputs. Every output, log and benchmark path of every rule is results_path(...).
+RESULTS = config["results_dir"].rstrip("/")
+
+
+def results_path(relative):
+    """``relative`` (e.g. "debye2020/comparison.csv", may hold {wildcards}) under this run's
+    results folder (config ``results_dir``)."""
+    return f"{RESULTS}/{relative}"
+
 
 def script_sources(script):
     """The package modules (.py files) that the script ``script`` of a rule (a path relative
@@ -95,9 +106,9 @@ def report_table(path, paper):
 
 def report_benchmark_patterns(paper):
     """{rule: benchmark pattern} of every rule defined so far whose benchmark files lie in
-    results/{paper}/benchmarks/."""
+    the run's {results_dir}/{paper}/benchmarks/."""
     return {rule.name: str(rule.benchmark) for rule in workflow.rules
-            if rule.benchmark is not None and str(rule.benchmark).startswith(f"results/{paper}/benchmarks/")}
+            if rule.benchmark is not None and str(rule.benchmark).startswith(results_path(f"{paper}/benchmarks/"))}
 
 
 # --------------------------------------------------------------------------- debye2020 helpers
@@ -117,8 +128,8 @@ def comparison_models():
 def figure_outputs(number, in_report=False):
     """figNN.pdf and figNN.png of debye2020; with ``in_report`` (rule outputs) the PNG is
     marked for the HTML report (report_figure)."""
-    png = f"results/debye2020/figures/fig{number:02d}.png"
-    return {"pdf": f"results/debye2020/figures/fig{number:02d}.pdf",
+    png = results_path(f"debye2020/figures/fig{number:02d}.png")
+    return {"pdf": results_path(f"debye2020/figures/fig{number:02d}.pdf"),
             "png": report_figure(png, "debye2020", number) if in_report else png}
 
 
@@ -167,7 +178,7 @@ def m_chunk_samples(wildcards):
 
 
 def m_merged(system, kind):
-    return f"results/mrj2016/descriptors/{system}_{kind}.nc"
+    return results_path(f"mrj2016/descriptors/{system}_{kind}.nc")
 
 
 def m_inputs(pairs):
@@ -203,7 +214,7 @@ def m_describe_inputs(wildcards):
     (then the merge job computes them itself: one job instead of two)."""
     if m_n_chunks(wildcards.system) == 1:
         return {"samples": M_SAMPLES[wildcards.system]}
-    return {"chunks": expand("results/mrj2016/descriptors/{system}/{kind}_chunk{c}.nc",
+    return {"chunks": expand(results_path("mrj2016/descriptors/{system}/{kind}_chunk{c}.nc"),
                              system=wildcards.system, kind=wildcards.kind,
                              c=range(m_n_chunks(wildcards.system)))}
 
@@ -216,9 +227,9 @@ def sphere_figure(number, second_reading=False, in_report=False):
     """Output files of the rule of paper figure ``number``; with ``second_reading`` also
     figNN_alpha_cubed (the same figure for the second reading of Eq. 12b); with ``in_report``
     (rule outputs) the PNGs are marked for the HTML report (report_figure)."""
-    files = {ext: f"results/sphere2019/figures/fig{number:02d}.{ext}" for ext in ("pdf", "png")}
+    files = {ext: results_path(f"sphere2019/figures/fig{number:02d}.{ext}") for ext in ("pdf", "png")}
     if second_reading:
-        files.update({f"alpha_cubed_{ext}": f"results/sphere2019/figures/fig{number:02d}_alpha_cubed.{ext}"
+        files.update({f"alpha_cubed_{ext}": results_path(f"sphere2019/figures/fig{number:02d}_alpha_cubed.{ext}")
                       for ext in ("pdf", "png")})
     if in_report:  # the PNGs marked for the HTML report
         files["png"] = report_figure(files["png"], "sphere2019", number)
@@ -244,7 +255,7 @@ validate_config(_PAPER_CONFIG, Path(workflow.basedir) / "workflow" / "schemas" /
 
 def record_root(paper):
     """record/ when the run's configuration of ``paper`` is the paper's own (its section,
-    seed, comparison as in config/config.yaml), results/record/ otherwise: a quick or
+    seed, comparison as in config/config.yaml), {results_dir}/record/ otherwise: a quick or
     extended run never overwrites the committed record."""
     same = _paper_config(config, paper) == _paper_config(_PAPER_CONFIG, paper)
-    return "record" if same else "results/record"
+    return "record" if same else results_path("record")

@@ -18,11 +18,11 @@ import re
 
 MEDIA = config["debye2020"]["media"]
 CHORDS = config["debye2020"]["chords"]
-MEDIA_CHORDS = "results/debye2020/descriptors/media_phi{phi2}_chords.nc"
-LINEAL_FITS = "results/debye2020/fits/lineal_path.nc"
+MEDIA_CHORDS = results_path("debye2020/descriptors/media_phi{phi2}_chords.nc")
+LINEAL_FITS = results_path("debye2020/fits/lineal_path.nc")
 MEDIA_PHI2 = {f"{phi:g}": phi for phi in MEDIA["phi2"]}
-MEDIA_SAMPLE = "results/debye2020/media/phi{phi2}/sample{k}.nc"
-MEDIA_S2 = "results/debye2020/descriptors/media_phi{phi2}_S2.nc"
+MEDIA_SAMPLE = results_path("debye2020/media/phi{phi2}/sample{k}.nc")
+MEDIA_S2 = results_path("debye2020/descriptors/media_phi{phi2}_S2.nc")
 
 #: the media's {phi2} wildcard: one of the configured volume fractions
 MEDIA_PHI2_CONSTRAINT = "|".join(re.escape(name) for name in MEDIA_PHI2)
@@ -44,9 +44,9 @@ rule debye2020_media_sample:
         schedule=MEDIA["schedule"],
         seed=config["seed"],
     benchmark:
-        "results/debye2020/benchmarks/media_sample_phi{phi2}_sample{k}.tsv"
+        results_path("debye2020/benchmarks/media_sample_phi{phi2}_sample{k}.tsv")
     log:
-        "results/debye2020/logs/media_phi{phi2}_sample{k}.log",
+        results_path("debye2020/logs/media_phi{phi2}_sample{k}.log"),
     threads: 1
     resources:
         mem_mb=1000,
@@ -69,9 +69,9 @@ rule debye2020_media_s2:
         a=MEDIA["a"],
         lc=MEDIA["lc"],
     benchmark:
-        "results/debye2020/benchmarks/media_s2_phi{phi2}.tsv"
+        results_path("debye2020/benchmarks/media_s2_phi{phi2}.tsv")
     log:
-        "results/debye2020/logs/media_s2_phi{phi2}.log",
+        results_path("debye2020/logs/media_s2_phi{phi2}.log"),
     script:
         "../scripts/debye2020/media_s2.py"
 
@@ -87,9 +87,9 @@ rule debye2020_fig01:
         figure=1,
         settings={"a": MEDIA["a"]},
     benchmark:
-        "results/debye2020/benchmarks/fig01.tsv"
+        results_path("debye2020/benchmarks/fig01.tsv")
     log:
-        "results/debye2020/logs/fig01.log",
+        results_path("debye2020/logs/fig01.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -105,9 +105,9 @@ rule debye2020_fig02:
         figure=2,
         settings={"lc": MEDIA["lc"]},
     benchmark:
-        "results/debye2020/benchmarks/fig02.tsv"
+        results_path("debye2020/benchmarks/fig02.tsv")
     log:
-        "results/debye2020/logs/fig02.log",
+        results_path("debye2020/logs/fig02.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -128,9 +128,9 @@ rule debye2020_media_chords:
         chords=CHORDS,
         seed=config["seed"],
     benchmark:
-        "results/debye2020/benchmarks/media_chords_phi{phi2}.tsv"
+        results_path("debye2020/benchmarks/media_chords_phi{phi2}.tsv")
     log:
-        "results/debye2020/logs/media_chords_phi{phi2}.log",
+        results_path("debye2020/logs/media_chords_phi{phi2}.log"),
     script:
         "../scripts/debye2020/chords.py"
 
@@ -145,9 +145,9 @@ rule debye2020_fit_lineal_path:
     params:
         a=MEDIA["a"],
     benchmark:
-        "results/debye2020/benchmarks/fit_lineal_path.tsv"
+        results_path("debye2020/benchmarks/fit_lineal_path.tsv")
     log:
-        "results/debye2020/logs/fit_lineal_path.log",
+        results_path("debye2020/logs/fit_lineal_path.log"),
     script:
         "../scripts/debye2020/fit_lineal_path.py"
 
@@ -164,9 +164,9 @@ rule debye2020_fig06:
         figure=6,
         settings={"a": MEDIA["a"]},
     benchmark:
-        "results/debye2020/benchmarks/fig06.tsv"
+        results_path("debye2020/benchmarks/fig06.tsv")
     log:
-        "results/debye2020/logs/fig06.log",
+        results_path("debye2020/logs/fig06.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -183,18 +183,18 @@ rule debye2020_fig07:
         figure=7,
         settings={"a": MEDIA["a"]},
     benchmark:
-        "results/debye2020/benchmarks/fig07.tsv"
+        results_path("debye2020/benchmarks/fig07.tsv")
     log:
-        "results/debye2020/logs/fig07.log",
+        results_path("debye2020/logs/fig07.log"),
     script:
         "../scripts/debye2020/figure.py"
 
 
 DISKS = config["debye2020"]["overlapping_disks"]
-DISKS_DIR = f"results/debye2020/overlapping_disks/phi{DISKS['phi2']:g}"
-DISKS_S2 = f"results/debye2020/descriptors/overlapping_disks_phi{DISKS['phi2']:g}_S2.nc"
-DISKS_FIGURE = "results/debye2020/validation/overlapping_disks_S2.pdf"
-DISKS_CHORDS = f"results/debye2020/descriptors/overlapping_disks_phi{DISKS['phi2']:g}_chords.nc"
+DISKS_DIR = results_path(f"debye2020/overlapping_disks/phi{DISKS['phi2']:g}")
+DISKS_S2 = results_path(f"debye2020/descriptors/overlapping_disks_phi{DISKS['phi2']:g}_S2.nc")
+DISKS_FIGURE = results_path("debye2020/validation/overlapping_disks_S2.pdf")
+DISKS_CHORDS = results_path(f"debye2020/descriptors/overlapping_disks_phi{DISKS['phi2']:g}_chords.nc")
 
 
 rule debye2020_overlapping_disks_image:
@@ -209,9 +209,9 @@ rule debye2020_overlapping_disks_image:
         phi2=DISKS["phi2"],
         seed=config["seed"],
     benchmark:
-        "results/debye2020/benchmarks/overlapping_disks_image_sample{k}.tsv"
+        results_path("debye2020/benchmarks/overlapping_disks_image_sample{k}.tsv")
     log:
-        f"results/debye2020/logs/overlapping_disks_image_{{k}}.log",
+        results_path(f"debye2020/logs/overlapping_disks_image_{{k}}.log"),
     threads: 1
     script:
         "../scripts/debye2020/overlapping_disks_image.py"
@@ -228,9 +228,9 @@ rule debye2020_overlapping_disks_s2:
         r_max=DISKS["s2_r_max_over_R"] * DISKS["radius"],
         L=DISKS["L"],
     benchmark:
-        "results/debye2020/benchmarks/overlapping_disks_s2.tsv"
+        results_path("debye2020/benchmarks/overlapping_disks_s2.tsv")
     log:
-        "results/debye2020/logs/overlapping_disks_s2.log",
+        results_path("debye2020/logs/overlapping_disks_s2.log"),
     threads: 1
     script:
         "../scripts/debye2020/overlapping_disks_s2.py"
@@ -250,9 +250,9 @@ rule debye2020_overlapping_disks_figure:
         settings={"radius": DISKS["radius"], "phi2": DISKS["phi2"],
                   "compare_r_max": DISKS["compare_r_max_over_R"] * DISKS["radius"]},
     benchmark:
-        "results/debye2020/benchmarks/overlapping_disks_figure.tsv"
+        results_path("debye2020/benchmarks/overlapping_disks_figure.tsv")
     log:
-        "results/debye2020/logs/overlapping_disks_figure.log",
+        results_path("debye2020/logs/overlapping_disks_figure.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -271,9 +271,9 @@ rule debye2020_overlapping_disks_chords:
         chords=CHORDS,
         seed=config["seed"],
     benchmark:
-        "results/debye2020/benchmarks/overlapping_disks_chords.tsv"
+        results_path("debye2020/benchmarks/overlapping_disks_chords.tsv")
     log:
-        "results/debye2020/logs/overlapping_disks_chords.log",
+        results_path("debye2020/logs/overlapping_disks_chords.log"),
     script:
         "../scripts/debye2020/chords.py"
 
@@ -282,9 +282,9 @@ rule debye2020_overlapping_disks_chords:
 
 INTERFACE = config["debye2020"]["interface"]
 FITS = config["debye2020"]["fits"]
-LEVEL_SET_SURFACE = "results/debye2020/descriptors/{system}_surface.nc"
-LEVEL_SET_PORES = "results/debye2020/descriptors/{system}_pores.nc"
-SURFACE_PORE_FITS = "results/debye2020/fits/surface_pores.nc"
+LEVEL_SET_SURFACE = results_path("debye2020/descriptors/{system}_surface.nc")
+LEVEL_SET_PORES = results_path("debye2020/descriptors/{system}_pores.nc")
+SURFACE_PORE_FITS = results_path("debye2020/fits/surface_pores.nc")
 DISKS_SYSTEM = f"overlapping_disks_phi{DISKS['phi2']:g}"
 COMPARISON_PHI2 = f"{DISKS['phi2']:g}"  # Sec. VI: all three models at this phi2
 # Equilibrium hard disks come from debye2020_hard_disks.smk (included before this file):
@@ -325,9 +325,9 @@ rule debye2020_level_set:
         interface=INTERFACE,
         seed=config["seed"],
     benchmark:
-        "results/debye2020/benchmarks/level_set_{system}.tsv"
+        results_path("debye2020/benchmarks/level_set_{system}.tsv")
     log:
-        "results/debye2020/logs/level_set_{system}.log",
+        results_path("debye2020/logs/level_set_{system}.log"),
     threads: 1
     resources:
         mem_mb=3000,
@@ -348,9 +348,9 @@ rule debye2020_fit_surface_pores:
         a=MEDIA["a"],
         fits=FITS,
     benchmark:
-        "results/debye2020/benchmarks/fit_surface_pores.tsv"
+        results_path("debye2020/benchmarks/fit_surface_pores.tsv")
     log:
-        "results/debye2020/logs/fit_surface_pores.log",
+        results_path("debye2020/logs/fit_surface_pores.log"),
     script:
         "../scripts/debye2020/fit_surface_pores.py"
 
@@ -365,11 +365,11 @@ rule debye2020_numbers:
         models_pores=[level_set_files(name)["pores"] for name in comparison_models()],
         code=script_sources("../scripts/debye2020/numbers.py"),
     output:
-        "results/debye2020/tables/numbers.csv",
+        results_path("debye2020/tables/numbers.csv"),
     benchmark:
-        "results/debye2020/benchmarks/numbers.tsv"
+        results_path("debye2020/benchmarks/numbers.tsv")
     log:
-        "results/debye2020/logs/numbers.log",
+        results_path("debye2020/logs/numbers.log"),
     script:
         "../scripts/debye2020/numbers.py"
 
@@ -388,8 +388,8 @@ rule debye2020_comparison:
         quoted="config/reference/debye2020_quoted_numbers.csv",
         code=script_sources("../scripts/debye2020/comparison.py"),
     output:
-        comparison="results/debye2020/comparison.csv",
-        notes="results/debye2020/comparison_notes.csv",
+        comparison=results_path("debye2020/comparison.csv"),
+        notes=results_path("debye2020/comparison_notes.csv"),
     params:
         overlapping_disks=DISKS,
         media={key: MEDIA[key] for key in ("a", "lc", "L", "phi2", "n_samples")},
@@ -398,9 +398,9 @@ rule debye2020_comparison:
         formula_r_min=FITS["formula_r_min"],
         k_sigma=config["comparison"]["k_sigma"],
     benchmark:
-        "results/debye2020/benchmarks/comparison.tsv"
+        results_path("debye2020/benchmarks/comparison.tsv")
     log:
-        "results/debye2020/logs/comparison.log",
+        results_path("debye2020/logs/comparison.log"),
     script:
         "../scripts/debye2020/comparison.py"
 
@@ -408,7 +408,7 @@ rule debye2020_comparison:
 # --------------------------------------------------------------------------- figures 3-5, 8-12
 
 MEDIA_LEVEL_SET = [level_set_files(f"media_phi{name}") for name in MEDIA_PHI2]
-LEVEL_SET_FIGURE = "results/debye2020/validation/overlapping_disks_level_set.pdf"
+LEVEL_SET_FIGURE = results_path("debye2020/validation/overlapping_disks_level_set.pdf")
 
 
 rule debye2020_fig03:
@@ -422,9 +422,9 @@ rule debye2020_fig03:
         figure=3,
         settings={"a": MEDIA["a"]},
     benchmark:
-        "results/debye2020/benchmarks/fig03.tsv"
+        results_path("debye2020/benchmarks/fig03.tsv")
     log:
-        "results/debye2020/logs/fig03.log",
+        results_path("debye2020/logs/fig03.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -440,9 +440,9 @@ rule debye2020_fig04:
         figure=4,
         settings={"a": MEDIA["a"]},
     benchmark:
-        "results/debye2020/benchmarks/fig04.tsv"
+        results_path("debye2020/benchmarks/fig04.tsv")
     log:
-        "results/debye2020/logs/fig04.log",
+        results_path("debye2020/logs/fig04.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -459,9 +459,9 @@ rule debye2020_fig05:
         figure=5,
         settings={"a": MEDIA["a"]},
     benchmark:
-        "results/debye2020/benchmarks/fig05.tsv"
+        results_path("debye2020/benchmarks/fig05.tsv")
     log:
-        "results/debye2020/logs/fig05.log",
+        results_path("debye2020/logs/fig05.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -477,9 +477,9 @@ rule debye2020_fig08:
         figure=8,
         settings={"titles": ["overlapping disks", "equilibrium hard disks"]},
     benchmark:
-        "results/debye2020/benchmarks/fig08.tsv"
+        results_path("debye2020/benchmarks/fig08.tsv")
     log:
-        "results/debye2020/logs/fig08.log",
+        results_path("debye2020/logs/fig08.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -498,9 +498,9 @@ rule debye2020_fig09:
         figure=9,
         settings=SECTION6_PARAMS,
     benchmark:
-        "results/debye2020/benchmarks/fig09.tsv"
+        results_path("debye2020/benchmarks/fig09.tsv")
     log:
-        "results/debye2020/logs/fig09.log",
+        results_path("debye2020/logs/fig09.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -516,9 +516,9 @@ rule debye2020_fig10:
         figure=10,
         settings=SECTION6_PARAMS,
     benchmark:
-        "results/debye2020/benchmarks/fig10.tsv"
+        results_path("debye2020/benchmarks/fig10.tsv")
     log:
-        "results/debye2020/logs/fig10.log",
+        results_path("debye2020/logs/fig10.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -534,9 +534,9 @@ rule debye2020_fig11:
         figure=11,
         settings=SECTION6_PARAMS,
     benchmark:
-        "results/debye2020/benchmarks/fig11.tsv"
+        results_path("debye2020/benchmarks/fig11.tsv")
     log:
-        "results/debye2020/logs/fig11.log",
+        results_path("debye2020/logs/fig11.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -552,9 +552,9 @@ rule debye2020_fig12:
         figure=12,
         settings=SECTION6_PARAMS,
     benchmark:
-        "results/debye2020/benchmarks/fig12.tsv"
+        results_path("debye2020/benchmarks/fig12.tsv")
     log:
-        "results/debye2020/logs/fig12.log",
+        results_path("debye2020/logs/fig12.log"),
     script:
         "../scripts/debye2020/figure.py"
 
@@ -572,17 +572,17 @@ rule debye2020_overlapping_disks_level_set_figure:
         figure="overlapping_disks_level_set",
         settings={"radius": DISKS["radius"], "phi2": DISKS["phi2"]},
     benchmark:
-        "results/debye2020/benchmarks/overlapping_disks_level_set_figure.tsv"
+        results_path("debye2020/benchmarks/overlapping_disks_level_set_figure.tsv")
     log:
-        "results/debye2020/logs/overlapping_disks_level_set_figure.log",
+        results_path("debye2020/logs/overlapping_disks_level_set_figure.log"),
     script:
         "../scripts/debye2020/figure.py"
 
 
 DEBYE2020_TARGETS = HARD_DISKS_TARGETS + [
-    "results/debye2020/comparison.csv",
-    "results/debye2020/comparison_notes.csv",
-    "results/debye2020/tables/numbers.csv",
+    results_path("debye2020/comparison.csv"),
+    results_path("debye2020/comparison_notes.csv"),
+    results_path("debye2020/tables/numbers.csv"),
     DISKS_FIGURE,
     DISKS_FIGURE.replace(".pdf", ".png"),
     LEVEL_SET_FIGURE,

@@ -12,13 +12,13 @@
 # (one rule per chain: debye2020_hard_disks_chain{c}); it checkpoints beside them.
 
 HARD_DISKS = config["debye2020"]["hard_disks"]
-HARD_DISKS_DIR = f"results/debye2020/hard_disks/phi{HARD_DISKS['phi2']:g}"
+HARD_DISKS_DIR = results_path(f"debye2020/hard_disks/phi{HARD_DISKS['phi2']:g}")
 HARD_DISKS_PER_CHAIN = HARD_DISKS["samples_per_chain"]
 HARD_DISKS_SAMPLES = [
     f"{HARD_DISKS_DIR}/sample{k}.nc"
     for k in range(HARD_DISKS["n_chains"] * HARD_DISKS_PER_CHAIN)
 ]
-HARD_DISKS_VALIDATION = "results/debye2020/validation/hard_disks"
+HARD_DISKS_VALIDATION = results_path("debye2020/validation/hard_disks")
 HARD_DISKS_TARGETS = [
     f"{HARD_DISKS_VALIDATION}_eos.pdf",
     f"{HARD_DISKS_VALIDATION}_eos.png",
@@ -45,9 +45,9 @@ for _chain in range(HARD_DISKS["n_chains"]):
             checkpoint_seconds=HARD_DISKS["checkpoint_seconds"],
             seed=config["seed"],
         benchmark:
-            f"results/debye2020/benchmarks/hard_disks_chain{_chain}.tsv"
+            results_path(f"debye2020/benchmarks/hard_disks_chain{_chain}.tsv")
         log:
-            f"results/debye2020/logs/hard_disks_chain{_chain}.log",
+            results_path(f"debye2020/logs/hard_disks_chain{_chain}.log"),
         threads: 1
         resources:
             mem_mb=1000,
@@ -72,9 +72,9 @@ rule debye2020_hard_disks_validation:
         mc=HARD_DISKS["mc"],
         k_sigma=config["comparison"]["k_sigma"],
     benchmark:
-        "results/debye2020/benchmarks/hard_disks_validation.tsv"
+        results_path("debye2020/benchmarks/hard_disks_validation.tsv")
     log:
-        "results/debye2020/logs/hard_disks_validation.log",
+        results_path("debye2020/logs/hard_disks_validation.log"),
     script:
         "../scripts/debye2020/hard_disks_validation.py"
 

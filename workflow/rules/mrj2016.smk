@@ -28,7 +28,7 @@ M_WINDOWS = MRJ2016["number_variance"]
 M_FIGURES = MRJ2016.get("figures", {})
 M_CHUNK = M_DESCRIPTORS["chunk_size"]
 
-M_CONFIG = "results/mrj2016/configs/{system}/sample{k}.nc"
+M_CONFIG = results_path("mrj2016/configs/{system}/sample{k}.nc")
 M_REFERENCE = {
     "table2": "config/reference/mrj2016_table2_equilibrium.csv",
     "table3": "config/reference/mrj2016_table3_mrj.csv",
@@ -82,9 +82,9 @@ rule mrj2016_overlapping_samples:
         n_mean=M_OVERLAPPING["n_mean"],
         seed=config["seed"],
     benchmark:
-        "results/mrj2016/benchmarks/overlapping_samples.tsv"
+        results_path("mrj2016/benchmarks/overlapping_samples.tsv")
     log:
-        "results/mrj2016/logs/overlapping_samples.log",
+        results_path("mrj2016/logs/overlapping_samples.log"),
     threads: 1
     script:
         "../scripts/mrj2016/overlapping_samples.py"
@@ -95,16 +95,16 @@ rule mrj2016_lattice_samples:
     input:
         code=script_sources("../scripts/mrj2016/lattice_samples.py"),
     output:
-        expand("results/mrj2016/configs/{{lattice}}/sample{k}.nc", k=range(M_LATTICES["n_samples"])),
+        expand(results_path("mrj2016/configs/{{lattice}}/sample{k}.nc"), k=range(M_LATTICES["n_samples"])),
     wildcard_constraints:
         lattice="fcc|bcc",
     params:
         n_cells=lambda wildcards: M_LATTICES[f"{wildcards.lattice}_cells"],
         seed=config["seed"],
     benchmark:
-        "results/mrj2016/benchmarks/lattice_samples_{lattice}.tsv"
+        results_path("mrj2016/benchmarks/lattice_samples_{lattice}.tsv")
     log:
-        "results/mrj2016/logs/{lattice}_samples.log",
+        results_path("mrj2016/logs/{lattice}_samples.log"),
     threads: 1
     script:
         "../scripts/mrj2016/lattice_samples.py"
@@ -119,7 +119,7 @@ rule mrj2016_describe_chunk:
         samples=m_chunk_samples,
         code=script_sources("../scripts/mrj2016/describe_chunk.py"),
     output:
-        "results/mrj2016/descriptors/{system}/{kind}_chunk{c}.nc",
+        results_path("mrj2016/descriptors/{system}/{kind}_chunk{c}.nc"),
     wildcard_constraints:
         system=M_SYSTEM_CONSTRAINT,
         kind=M_KIND_CONSTRAINT,
@@ -128,9 +128,9 @@ rule mrj2016_describe_chunk:
         first=lambda wildcards: int(wildcards.c) * M_CHUNK,
         settings=lambda wildcards: m_describe_settings(wildcards.kind, wildcards.system),
     benchmark:
-        "results/mrj2016/benchmarks/describe_chunk_{system}_{kind}_chunk{c}.tsv"
+        results_path("mrj2016/benchmarks/describe_chunk_{system}_{kind}_chunk{c}.tsv")
     log:
-        "results/mrj2016/logs/{system}_{kind}_chunk{c}.log",
+        results_path("mrj2016/logs/{system}_{kind}_chunk{c}.log"),
     threads: 1
     resources:
         mem_mb=3000,
@@ -145,16 +145,16 @@ rule mrj2016_describe:
         unpack(m_describe_inputs),
         code=script_sources("../scripts/mrj2016/describe_merge.py"),
     output:
-        "results/mrj2016/descriptors/{system}_{kind}.nc",
+        results_path("mrj2016/descriptors/{system}_{kind}.nc"),
     wildcard_constraints:
         system=M_SYSTEM_CONSTRAINT,
         kind=M_KIND_CONSTRAINT,
     params:
         settings=lambda wildcards: m_describe_settings(wildcards.kind, wildcards.system, merge=True),
     benchmark:
-        "results/mrj2016/benchmarks/describe_{system}_{kind}.tsv"
+        results_path("mrj2016/benchmarks/describe_{system}_{kind}.tsv")
     log:
-        "results/mrj2016/logs/{system}_{kind}.log",
+        results_path("mrj2016/logs/{system}_{kind}.log"),
     threads: 1
     resources:
         mem_mb=3000,
@@ -208,17 +208,17 @@ rule mrj2016_figure:
         unpack(lambda wildcards: M_FIGURE_INPUTS[int(wildcards.nn)]),
         code=script_sources("../scripts/mrj2016/figure.py"),
     output:
-        pdf="results/mrj2016/figures/fig{nn}.pdf",
+        pdf=results_path("mrj2016/figures/fig{nn}.pdf"),
         # one caption for the 13 figures (a Jinja template branching on the wildcard nn)
-        png=report("results/mrj2016/figures/fig{nn}.png", caption="../report/mrj2016/figures.rst",
+        png=report(results_path("mrj2016/figures/fig{nn}.png"), caption="../report/mrj2016/figures.rst",
                    category="mrj2016", subcategory="Fig. {nn}"),
     params:
         figure=lambda wildcards: int(wildcards.nn),
         settings=lambda wildcards: M_FIGURE_PARAMS[int(wildcards.nn)],
     benchmark:
-        "results/mrj2016/benchmarks/fig{nn}.tsv"
+        results_path("mrj2016/benchmarks/fig{nn}.tsv")
     log:
-        "results/mrj2016/logs/fig{nn}.log",
+        results_path("mrj2016/logs/fig{nn}.log"),
     wildcard_constraints:
         nn="|".join(f"{n:02d}" for n in range(1, 14)),
     script:
@@ -244,14 +244,14 @@ rule mrj2016_table:
         reference=lambda wildcards: M_REFERENCE.get(f"table{wildcards.n}", M_REFERENCE["quoted"]),
         code=script_sources("../scripts/mrj2016/table.py"),
     output:
-        "results/mrj2016/tables/table{n}.csv",
+        results_path("mrj2016/tables/table{n}.csv"),
     params:
         overlapping_phi=M_OVERLAPPING["phi"],
         spectral_binning=MRJ2016["tables"]["spectral_binning"],
     benchmark:
-        "results/mrj2016/benchmarks/table{n}.tsv"
+        results_path("mrj2016/benchmarks/table{n}.tsv")
     log:
-        "results/mrj2016/logs/table{n}.log",
+        results_path("mrj2016/logs/table{n}.log"),
     wildcard_constraints:
         n="[1-5]",
     script:
@@ -262,13 +262,13 @@ rule mrj2016_comparison:
     """comparison.csv: every table cell and quoted number against ours (+ comparison_notes.csv)."""
     input:
         unpack(lambda wildcards: M_TABLE_INPUTS[1]),
-        tables=expand("results/mrj2016/tables/table{n}.csv", n=M_TABLES),
+        tables=expand(results_path("mrj2016/tables/table{n}.csv"), n=M_TABLES),
         references=list(M_REFERENCE.values()),
         equilibrium_validation=EQUILIBRIUM_TARGETS[3],
         code=script_sources("../scripts/mrj2016/comparison.py"),
     output:
-        comparison="results/mrj2016/comparison.csv",
-        notes="results/mrj2016/comparison_notes.csv",
+        comparison=results_path("mrj2016/comparison.csv"),
+        notes=results_path("mrj2016/comparison_notes.csv"),
     params:
         k_sigma=config["comparison"]["k_sigma"],
         overlapping_phi=M_OVERLAPPING["phi"],
@@ -276,19 +276,19 @@ rule mrj2016_comparison:
         windows=M_WINDOWS,
         n_samples={system: len(samples) for system, samples in M_SAMPLES.items()},
     benchmark:
-        "results/mrj2016/benchmarks/comparison.tsv"
+        results_path("mrj2016/benchmarks/comparison.tsv")
     log:
-        "results/mrj2016/logs/comparison.log",
+        results_path("mrj2016/logs/comparison.log"),
     script:
         "../scripts/mrj2016/comparison.py"
 
 
-M_FIGURES_OUT = [f"results/mrj2016/figures/fig{n:02d}.{ext}" for n in range(1, 14) for ext in ("pdf", "png")]
-M_TABLES_OUT = [f"results/mrj2016/tables/table{n}.csv" for n in M_TABLES]
+M_FIGURES_OUT = [results_path(f"mrj2016/figures/fig{n:02d}.{ext}") for n in range(1, 14) for ext in ("pdf", "png")]
+M_TABLES_OUT = [results_path(f"mrj2016/tables/table{n}.csv") for n in M_TABLES]
 
 MRJ2016_TARGETS = (
     M_FIGURES_OUT + M_TABLES_OUT
-    + ["results/mrj2016/comparison.csv", "results/mrj2016/comparison_notes.csv"]
+    + [results_path("mrj2016/comparison.csv"), results_path("mrj2016/comparison_notes.csv")]
     + EQUILIBRIUM_TARGETS
     + JAMMED_TARGETS
 )
@@ -306,8 +306,8 @@ for _n in range(1, 14):
         name:
             f"mrj2016_fig{_n:02d}"
         input:
-            f"results/mrj2016/figures/fig{_n:02d}.pdf",
-            f"results/mrj2016/figures/fig{_n:02d}.png",
+            results_path(f"mrj2016/figures/fig{_n:02d}.pdf"),
+            results_path(f"mrj2016/figures/fig{_n:02d}.png"),
 
 
 for _n in M_TABLES:
@@ -316,4 +316,4 @@ for _n in M_TABLES:
         name:
             f"mrj2016_table{_n}"
         input:
-            f"results/mrj2016/tables/table{_n}.csv",
+            results_path(f"mrj2016/tables/table{_n}.csv"),

@@ -11,13 +11,13 @@
 # (one rule per chain: mrj2016_equilibrium_chain{c}); it checkpoints beside them.
 
 MRJ2016_EQUILIBRIUM = config["mrj2016"]["equilibrium"]
-EQUILIBRIUM_DIR = "results/mrj2016/configs/equilibrium"
+EQUILIBRIUM_DIR = results_path("mrj2016/configs/equilibrium")
 EQUILIBRIUM_PER_CHAIN = MRJ2016_EQUILIBRIUM["samples_per_chain"]
 EQUILIBRIUM_SAMPLES = [
     f"{EQUILIBRIUM_DIR}/sample{k}.nc"
     for k in range(MRJ2016_EQUILIBRIUM["n_chains"] * EQUILIBRIUM_PER_CHAIN)
 ]
-EQUILIBRIUM_VALIDATION = "results/mrj2016/validation/equilibrium"
+EQUILIBRIUM_VALIDATION = results_path("mrj2016/validation/equilibrium")
 EQUILIBRIUM_TARGETS = [
     f"{EQUILIBRIUM_VALIDATION}_eos.pdf",
     f"{EQUILIBRIUM_VALIDATION}_eos.png",
@@ -44,9 +44,9 @@ for _chain in range(MRJ2016_EQUILIBRIUM["n_chains"]):
             checkpoint_seconds=MRJ2016_EQUILIBRIUM["checkpoint_seconds"],
             seed=config["seed"],
         benchmark:
-            f"results/mrj2016/benchmarks/equilibrium_chain{_chain}.tsv"
+            results_path(f"mrj2016/benchmarks/equilibrium_chain{_chain}.tsv")
         log:
-            f"results/mrj2016/logs/equilibrium_chain{_chain}.log",
+            results_path(f"mrj2016/logs/equilibrium_chain{_chain}.log"),
         threads: 1
         resources:
             mem_mb=1000,
@@ -71,9 +71,9 @@ rule mrj2016_equilibrium_validation:
         mc=MRJ2016_EQUILIBRIUM["mc"],
         k_sigma=config["comparison"]["k_sigma"],
     benchmark:
-        "results/mrj2016/benchmarks/equilibrium_validation.tsv"
+        results_path("mrj2016/benchmarks/equilibrium_validation.tsv")
     log:
-        "results/mrj2016/logs/equilibrium_validation.log",
+        results_path("mrj2016/logs/equilibrium_validation.log"),
     script:
         "../scripts/mrj2016/equilibrium_validation.py"
 

@@ -10,11 +10,11 @@
 #   JAMMED_TARGETS     packings.csv (phi, z, rattler fraction, Q6 per packing; mean, SEM)
 
 MRJ_JAMMED = config["mrj2016"]["mrj"]
-MRJ_PACKING = "results/mrj2016/configs/{system}/sample{k}.nc"
+MRJ_PACKING = results_path("mrj2016/configs/{system}/sample{k}.nc")
 MRJ_SAMPLES = expand(MRJ_PACKING, system="mrj", k=range(MRJ_JAMMED["mrj"]["n_samples"]))
 MRJ_LARGE_SAMPLES = expand(MRJ_PACKING, system="mrj_large",
                            k=range(MRJ_JAMMED["mrj_large"]["n_samples"]))
-MRJ_PACKINGS_TABLE = "results/mrj2016/packings.csv"
+MRJ_PACKINGS_TABLE = results_path("mrj2016/packings.csv")
 JAMMED_TARGETS = [MRJ_PACKINGS_TABLE]
 
 
@@ -37,9 +37,9 @@ rule mrj2016_jammed_packing:
         checkpoint_seconds=MRJ_JAMMED["checkpoint_seconds"],
         seed=config["seed"],
     benchmark:
-        "results/mrj2016/benchmarks/jammed_packing_{system}_sample{k}.tsv"
+        results_path("mrj2016/benchmarks/jammed_packing_{system}_sample{k}.tsv")
     log:
-        "results/mrj2016/logs/jammed_{system}_sample{k}.log",
+        results_path("mrj2016/logs/jammed_{system}_sample{k}.log"),
     threads: 1
     resources:
         # HiGHS IPX: ~2 GB for one LP of 16 000 spheres (measured)
@@ -63,9 +63,9 @@ rule mrj2016_packings:
     params:
         contacts=MRJ_JAMMED["contacts"],
     benchmark:
-        "results/mrj2016/benchmarks/packings.tsv"
+        results_path("mrj2016/benchmarks/packings.tsv")
     log:
-        "results/mrj2016/logs/packings.log",
+        results_path("mrj2016/logs/packings.log"),
     script:
         "../scripts/mrj2016/jammed_packings.py"
 

@@ -16,11 +16,11 @@ for _paper, _targets in REPORT_PAPERS.items():
         name:
             f"{_paper}_record"
         input:
-            comparison=f"results/{_paper}/comparison.csv",
-            notes=f"results/{_paper}/comparison_notes.csv",
+            comparison=results_path(f"{_paper}/comparison.csv"),
+            notes=results_path(f"{_paper}/comparison_notes.csv"),
             tables=sorted(set(_csv)),
             figures=[path for path in _targets if path.endswith(".png")],
-            benchmarks=f"results/{_paper}/benchmarks.csv",
+            benchmarks=results_path(f"{_paper}/benchmarks.csv"),
             # every other target: the record is made after all of the paper's jobs
             targets=[path for path in _targets if not path.endswith((".csv", ".png"))],
             code=script_sources("../scripts/record.py"),
@@ -29,7 +29,7 @@ for _paper, _targets in REPORT_PAPERS.items():
         params:
             paper=_paper,
         log:
-            f"results/{_paper}/logs/record.log",
+            results_path(f"{_paper}/logs/record.log"),
         script:
             "../scripts/record.py"
 
@@ -41,10 +41,10 @@ rule record:
         list(RECORD_FOLDERS.values()),
     output:
         # one status table per root: results/record/ when any paper's config differs
-        "results/record/README.md" if any(root.startswith("results/") for root in RECORD_FOLDERS.values())
+        results_path("record/README.md") if any(record_root(paper) != "record" for paper in REPORT_PAPERS)
         else "record/README.md",
     log:
-        "results/logs/record.log",
+        results_path("logs/record.log"),
     run:
         from randmedia.record import write_status
 

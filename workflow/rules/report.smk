@@ -33,7 +33,7 @@ for _paper, _targets in REPORT_PAPERS.items():
                 if str(path).endswith(".csv") and str(path) not in _tables]
     _pages = {path: report_table(path, _paper) for path in _tables}
     assert len({name for name, _, _ in _pages.values()}) == len(_pages), f"two {_paper} tables share a name"
-    _notes = f"results/{_paper}/comparison_notes.csv"
+    _notes = results_path(f"{_paper}/comparison_notes.csv")
 
     rule:
         name:
@@ -46,20 +46,20 @@ for _paper, _targets in REPORT_PAPERS.items():
             **({"notes": _notes} if _notes in _tables else {}),
             code=script_sources("../scripts/report_tables.py"),
         output:
-            pages=[report(f"results/{_paper}/report/{name}.html", caption=f"../report/{caption}",
+            pages=[report(results_path(f"{_paper}/report/{name}.html"), caption=f"../report/{caption}",
                           category=_paper, subcategory=subcategory)
                    for name, caption, subcategory in _pages.values()],
-            benchmarks=f"results/{_paper}/benchmarks.csv",
-            benchmark_page=report(f"results/{_paper}/report/benchmarks.html",
+            benchmarks=results_path(f"{_paper}/benchmarks.csv"),
+            benchmark_page=report(results_path(f"{_paper}/report/benchmarks.html"),
                                   caption="../report/benchmarks.rst", category=_paper,
                                   subcategory="Run time and memory"),
         params:
             paper=_paper,
             benchmark_patterns=report_benchmark_patterns(_paper),
         log:
-            f"results/{_paper}/logs/report_tables.log",
+            results_path(f"{_paper}/logs/report_tables.log"),
         script:
             "../scripts/report_tables.py"
 
-    REPORT_TARGETS += [f"results/{_paper}/report/{name}.html" for name, _, _ in _pages.values()]
-    REPORT_TARGETS += [f"results/{_paper}/benchmarks.csv", f"results/{_paper}/report/benchmarks.html"]
+    REPORT_TARGETS += [results_path(f"{_paper}/report/{name}.html") for name, _, _ in _pages.values()]
+    REPORT_TARGETS += [results_path(f"{_paper}/benchmarks.csv"), results_path(f"{_paper}/report/benchmarks.html")]

@@ -19,9 +19,9 @@ SPHERE_CAPS = SPHERE["caps"]
 SPHERE_PATTERN_SYSTEMS = ["icosahedral", "fibonacci", "uniform", "poisson"]
 SPHERE_FLUID_SYSTEMS = list(SPHERE_FLUIDS["systems"])
 SPHERE_SYSTEMS = SPHERE_PATTERN_SYSTEMS + SPHERE_FLUID_SYSTEMS
-SPHERE_CONFIG = "results/sphere2019/configs/{system}.nc"
-SPHERE_DESCRIPTOR = "results/sphere2019/descriptors/{system}.nc"
-SPHERE_FITS = "results/sphere2019/fits/exponents.nc"
+SPHERE_CONFIG = results_path("sphere2019/configs/{system}.nc")
+SPHERE_DESCRIPTOR = results_path("sphere2019/descriptors/{system}.nc")
+SPHERE_FITS = results_path("sphere2019/fits/exponents.nc")
 SPHERE_R15 = ["lj_R15", "udd_R15", "uddpar_a1_R15", "udc_R15", "ucc_R15"]
 SPHERE_ALPHA = ["uddpar_a1_R5", "uddpar_a3_R5", "uddpar_a6_R5"]
 # the second reading of Eq. (12b), epsilon (alpha d/r)^3 (alpha = 1 is the same system):
@@ -50,7 +50,7 @@ rule sphere2019_pattern:
     input:
         code=script_sources("../scripts/sphere2019/pattern.py"),
     output:
-        "results/sphere2019/configs/{system}.nc",
+        results_path("sphere2019/configs/{system}.nc"),
     wildcard_constraints:
         system="|".join(SPHERE_PATTERN_SYSTEMS),
     params:
@@ -58,9 +58,9 @@ rule sphere2019_pattern:
                                     for key in SPHERE_PATTERN_KEYS[wildcards.system]},
         seed=lambda wildcards: None if wildcards.system in ("icosahedral", "fibonacci") else config["seed"],
     benchmark:
-        "results/sphere2019/benchmarks/pattern_{system}.tsv"
+        results_path("sphere2019/benchmarks/pattern_{system}.tsv")
     log:
-        "results/sphere2019/logs/config_{system}.log",
+        results_path("sphere2019/logs/config_{system}.log"),
     threads: 1
     script:
         "../scripts/sphere2019/pattern.py"
@@ -72,7 +72,7 @@ rule sphere2019_fluid:
     input:
         code=script_sources("../scripts/sphere2019/fluid.py"),
     output:
-        "results/sphere2019/configs/{system}.nc",
+        results_path("sphere2019/configs/{system}.nc"),
     wildcard_constraints:
         system="|".join(SPHERE_FLUID_SYSTEMS),
     params:
@@ -86,9 +86,9 @@ rule sphere2019_fluid:
         n_a=SPHERE_CAPS["n_a"],
         seed=config["seed"],
     benchmark:
-        "results/sphere2019/benchmarks/fluid_{system}.tsv"
+        results_path("sphere2019/benchmarks/fluid_{system}.tsv")
     log:
-        "results/sphere2019/logs/config_{system}.log",
+        results_path("sphere2019/logs/config_{system}.log"),
     threads: 1
     resources:
         mem_mb=2000,
@@ -109,9 +109,9 @@ rule sphere2019_describe:
         caps=SPHERE_CAPS,
         seed=config["seed"],
     benchmark:
-        "results/sphere2019/benchmarks/describe_{system}.tsv"
+        results_path("sphere2019/benchmarks/describe_{system}.tsv")
     log:
-        "results/sphere2019/logs/describe_{system}.log",
+        results_path("sphere2019/logs/describe_{system}.log"),
     threads: 2
     script:
         "../scripts/sphere2019/describe.py"
@@ -127,9 +127,9 @@ rule sphere2019_fit:
     params:
         fit=SPHERE["fit"],
     benchmark:
-        "results/sphere2019/benchmarks/fit.tsv"
+        results_path("sphere2019/benchmarks/fit.tsv")
     log:
-        "results/sphere2019/logs/fit.log",
+        results_path("sphere2019/logs/fit.log"),
     script:
         "../scripts/sphere2019/fit.py"
 
@@ -142,12 +142,12 @@ rule sphere2019_table1:
         reference="config/reference/sphere2019_table1_exponents.csv",
         code=script_sources("../scripts/sphere2019/table1.py"),
     output:
-        table="results/sphere2019/tables/table1.csv",
-        runs="results/sphere2019/tables/mc_runs.csv",
+        table=results_path("sphere2019/tables/table1.csv"),
+        runs=results_path("sphere2019/tables/mc_runs.csv"),
     benchmark:
-        "results/sphere2019/benchmarks/table1.tsv"
+        results_path("sphere2019/benchmarks/table1.tsv")
     log:
-        "results/sphere2019/logs/table1.log",
+        results_path("sphere2019/logs/table1.log"),
     script:
         "../scripts/sphere2019/table1.py"
 
@@ -155,18 +155,18 @@ rule sphere2019_table1:
 rule sphere2019_comparison:
     """results/sphere2019/comparison.csv: a row per Table I entry (+ comparison_notes.csv)."""
     input:
-        table="results/sphere2019/tables/table1.csv",
+        table=results_path("sphere2019/tables/table1.csv"),
         code=script_sources("../scripts/sphere2019/comparison.py"),
     output:
-        comparison="results/sphere2019/comparison.csv",
-        notes="results/sphere2019/comparison_notes.csv",
+        comparison=results_path("sphere2019/comparison.csv"),
+        notes=results_path("sphere2019/comparison_notes.csv"),
     params:
         k_sigma=config["comparison"]["k_sigma"],
         rounding_margin=SPHERE["fit"]["rounding_margin"],
     benchmark:
-        "results/sphere2019/benchmarks/comparison.tsv"
+        results_path("sphere2019/benchmarks/comparison.tsv")
     log:
-        "results/sphere2019/logs/comparison.log",
+        results_path("sphere2019/logs/comparison.log"),
     script:
         "../scripts/sphere2019/comparison.py"
 
@@ -180,9 +180,9 @@ rule sphere2019_fig01:
     params:
         figure=1,
     benchmark:
-        "results/sphere2019/benchmarks/fig01.tsv"
+        results_path("sphere2019/benchmarks/fig01.tsv")
     log:
-        "results/sphere2019/logs/fig01.log",
+        results_path("sphere2019/logs/fig01.log"),
     script:
         "../scripts/sphere2019/figure.py"
 
@@ -198,9 +198,9 @@ rule sphere2019_fig02:
     params:
         figure=2,
     benchmark:
-        "results/sphere2019/benchmarks/fig02.tsv"
+        results_path("sphere2019/benchmarks/fig02.tsv")
     log:
-        "results/sphere2019/logs/fig02.log",
+        results_path("sphere2019/logs/fig02.log"),
     script:
         "../scripts/sphere2019/figure.py"
 
@@ -216,9 +216,9 @@ rule sphere2019_fig03:
     params:
         figure=3,
     benchmark:
-        "results/sphere2019/benchmarks/fig03.tsv"
+        results_path("sphere2019/benchmarks/fig03.tsv")
     log:
-        "results/sphere2019/logs/fig03.log",
+        results_path("sphere2019/logs/fig03.log"),
     script:
         "../scripts/sphere2019/figure.py"
 
@@ -234,9 +234,9 @@ rule sphere2019_fig04:
         figure=4,
         settings={"a_min": SPHERE_A_MIN_PLOT},
     benchmark:
-        "results/sphere2019/benchmarks/fig04.tsv"
+        results_path("sphere2019/benchmarks/fig04.tsv")
     log:
-        "results/sphere2019/logs/fig04.log",
+        results_path("sphere2019/logs/fig04.log"),
     script:
         "../scripts/sphere2019/figure.py"
 
@@ -253,9 +253,9 @@ rule sphere2019_fig05:
         figure=5,
         settings={"a_min": SPHERE_A_MIN_PLOT},
     benchmark:
-        "results/sphere2019/benchmarks/fig05.tsv"
+        results_path("sphere2019/benchmarks/fig05.tsv")
     log:
-        "results/sphere2019/logs/fig05.log",
+        results_path("sphere2019/logs/fig05.log"),
     script:
         "../scripts/sphere2019/figure.py"
 
@@ -271,9 +271,9 @@ rule sphere2019_fig06:
     params:
         figure=6,
     benchmark:
-        "results/sphere2019/benchmarks/fig06.tsv"
+        results_path("sphere2019/benchmarks/fig06.tsv")
     log:
-        "results/sphere2019/logs/fig06.log",
+        results_path("sphere2019/logs/fig06.log"),
     script:
         "../scripts/sphere2019/figure.py"
 
@@ -289,9 +289,9 @@ rule sphere2019_fig07:
     params:
         figure=7,
     benchmark:
-        "results/sphere2019/benchmarks/fig07.tsv"
+        results_path("sphere2019/benchmarks/fig07.tsv")
     log:
-        "results/sphere2019/logs/fig07.log",
+        results_path("sphere2019/logs/fig07.log"),
     script:
         "../scripts/sphere2019/figure.py"
 
@@ -307,19 +307,19 @@ rule sphere2019_fig08:
     params:
         figure=8,
     benchmark:
-        "results/sphere2019/benchmarks/fig08.tsv"
+        results_path("sphere2019/benchmarks/fig08.tsv")
     log:
-        "results/sphere2019/logs/fig08.log",
+        results_path("sphere2019/logs/fig08.log"),
     script:
         "../scripts/sphere2019/figure.py"
 
 
 SPHERE2019_FIGURES = [path for n in range(1, 9) for path in sphere_figure(n, n >= 5).values()]
 SPHERE2019_TARGETS = [
-    "results/sphere2019/comparison.csv",
-    "results/sphere2019/comparison_notes.csv",
-    "results/sphere2019/tables/table1.csv",
-    "results/sphere2019/tables/mc_runs.csv",
+    results_path("sphere2019/comparison.csv"),
+    results_path("sphere2019/comparison_notes.csv"),
+    results_path("sphere2019/tables/table1.csv"),
+    results_path("sphere2019/tables/mc_runs.csv"),
 ] + SPHERE2019_FIGURES
 
 

@@ -14,7 +14,7 @@ from randmedia import record
 REPO = Path(randmedia.__file__).resolve().parents[2]  # the checkout whose commit is recorded
 
 paper = snakemake.params.paper
-prefix = f"results/{paper}/"
+prefix = f"{snakemake.config['results_dir'].rstrip('/')}/{paper}/"  # the run's results folder
 sources = {path.removeprefix(prefix): path
            for path in [*snakemake.input.tables, *snakemake.input.figures]}
 comparison = pd.read_csv(snakemake.input.comparison)
