@@ -257,3 +257,24 @@ def test_direction_average_removes_the_pixel_grid_bias_of_F_ss():
         alternation[w] = np.abs(d[window] - 0.5 * (d[window - 1] + d[window + 1])).mean()
     assert worst["lattice"] > 0.03 and alternation["lattice"] > 0.025
     assert worst["angular"] < 0.02 and alternation["angular"] < 0.015
+
+
+@pytest.mark.parametrize("bin_weighting, tolerance", [("lattice", 0.005), ("angular", 0.003)])
+def test_F_ss_of_an_analytic_circle(bin_weighting, tolerance):
+    """One circle of radius rho: F_ss(r) = s / (pi r) (1 - r^2 / 4 rho^2)^(-1/2), s = 2 pi rho / A,
+    bin-averaged with the dataset's weights; from r = 2 px the deposit's smearing is < 0.4 %
+    (equal weights, which alternate by a few 0.1 %) or < 0.25 % (direction average)."""
+    from randmedia.describe.surface import level_set_descriptors, surface_binning
+
+    side, m, rho = 96, 4, 17.3
+    level_set = analytic_level_set(lambda x, y: np.hypot(x - 47.7, y - 46.2) - rho, side, m)
+    binning = surface_binning(level_set.fine.shape, m, 30.0, 0.5, bin_weighting)
+    result = level_set_descriptors(level_set, binning)
+    s = result["s"]
+    assert s * side**2 == pytest.approx(2 * np.pi * rho, rel=2e-4)
+    with np.errstate(divide="ignore", invalid="ignore"):
+        exact = binning.average_of(
+            lambda d: s / (np.pi * d / m) / np.sqrt(np.clip(1 - (d / m) ** 2 / (4 * rho**2), 1e-300, None)))
+    r = binning.r_mean / m
+    window = (r >= 2.0) & (r <= 30.0)
+    assert np.abs(result["F_ss"][window] / exact[window] - 1).max() < tolerance
