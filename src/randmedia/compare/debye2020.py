@@ -43,7 +43,7 @@ REASON_F_SS_SINGULARITY = (
     "bin next to the left-out ones at the divergence r = 2R: the digitized disks' radii scatter "
     f"by a fraction of a pixel and smear the singularity further ({_VALIDATION})")
 REASON_EULER_OVERLAPPING = (
-    "resolution: near-touching disks merge at pixel resolution (8 % fewer clusters than the "
+    "resolution: near-touching disks merge at pixel resolution (7 % fewer clusters than the "
     "exact geometry; holes are not lost), so the level set's Euler characteristic falls below Mecke's "
     f"(-9 % at R = 10 px, -29 % at R = 6 px; {_VALIDATION})")
 REASON_PARAMETER = ("our configured value is not the paper's (by design in the quick config; "

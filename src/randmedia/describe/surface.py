@@ -29,9 +29,10 @@ the axis directions on a pixel grid):
   with equal weights per displacement (``bin_weighting="lattice"``) or per
   direction (``"angular"``). The level set of a pixel image still prefers the
   grid's axes and diagonals (on digitized overlapping disks its interface
-  correlation at r = 2 px is ~35 % higher along them than between them), and the
-  lattice points of a half-pixel annulus bunch along those directions in some
-  bins and thin out in the next, so equal weights turn that anisotropy into a
+  correlation at r = 2 px is +35 % along them and -15 % between them against the
+  exact geometry), and the lattice points of a half-pixel annulus bunch along
+  those directions in some bins and thin out in the next, so equal weights turn
+  that anisotropy into a
   bias alternating in sign between half-pixel bins (+4.8, -1.7, +3.3 % at
   r = 2, 2.5, 3 px against the exact geometry of the same 50 disk images); the
   direction average removes the alternation (+2.4, +1.3, +1.9 %, what is left
