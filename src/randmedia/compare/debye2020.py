@@ -37,8 +37,10 @@ _MEASURED = "docs/debye2020.md, 'Measured, paper config'"
 #: F_ss bins of overlapping disks at r <= F_SS_PIXEL_STEP_RANGE pixels
 F_SS_PIXEL_STEP_RANGE = 5.0
 REASON_F_SS_PIXEL_STEPS = (
-    "the level set's rounded pixel steps make F_ss alternate in sign between half-pixel bins "
-    f"by a few per cent at r <= {F_SS_PIXEL_STEP_RANGE:g} px ({_VALIDATION})")
+    "the level set keeps the pixel grid's axes and diagonals, and bins that weight every lattice "
+    "displacement alike sample those directions unevenly, so F_ss alternates in sign between "
+    f"half-pixel bins by a few per cent at r <= {F_SS_PIXEL_STEP_RANGE:g} px "
+    "(docs/debye2020.md, 'Direction average')")
 REASON_F_SS_SINGULARITY = (
     "bin next to the left-out ones at the divergence r = 2R: the digitized disks' radii scatter "
     f"by a fraction of a pixel and smear the singularity further ({_VALIDATION})")
