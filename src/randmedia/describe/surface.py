@@ -36,7 +36,9 @@ the axis directions on a pixel grid):
   bias alternating in sign between half-pixel bins (+4.8, -1.7, +3.3 % at
   r = 2, 2.5, 3 px against the exact geometry of the same 50 disk images); the
   direction average removes the alternation (+2.4, +1.3, +1.9 %, what is left
-  being the level set's own excess, docs/debye2020.md, 'Direction average').
+  being the level set's own excess, docs/debye2020.md, 'Direction average'), and
+  is the default: it is the quadrature of the direction average that F_sv(r) and
+  F_ss(r) of an isotropic medium are.
 
 The deposit smears the interface over about one sub-pixel (1/4 pixel by
 default): F_ss (which diverges as s/(pi r) at r -> 0) is reliable from about
@@ -299,7 +301,7 @@ BIN_WEIGHTINGS = ("angular", "lattice")
 
 
 def surface_binning(fine_shape, supersample: int, r_max: float, bin_width: float,
-                    bin_weighting: str = "lattice") -> RadialBinning:
+                    bin_weighting: str = "angular") -> RadialBinning:
     """The radial bins of the surface functions on the sub-pixel grid (r_max, bin_width in
     pixels); also what a comparison rebuilds to average the exact functions the same way."""
     if bin_weighting not in BIN_WEIGHTINGS:
@@ -309,7 +311,7 @@ def surface_binning(fine_shape, supersample: int, r_max: float, bin_width: float
 
 
 def surface_functions(images, *, sigma: float, supersample: int, r_max: float,
-                      bin_width: float, model: str = "pixels", bin_weighting: str = "lattice",
+                      bin_width: float, model: str = "pixels", bin_weighting: str = "angular",
                       log=None) -> xr.Dataset:
     """F_sv(r), F_ss(r) (void = image value 0), s and the specific Euler characteristic of
     phase 2 for a stack of periodic images, on the level sets of width ``sigma``; per
