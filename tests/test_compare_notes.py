@@ -244,3 +244,31 @@ def test_sphere2019_rows_carry_the_reason_of_their_system():
         if system in failed:
             assert reason == sphere2019.FAILURE_REASONS[system] and "docs/sphere2019.md" in reason
     assert sphere2019.FAILURE_REASONS["ucc_R15"].startswith(NOT_IDENTIFIED)
+
+
+def test_debye2020_overlapping_disk_rows_average_the_exact_functions_like_the_data():
+    """A surface dataset binned with angular weights (attribute bin_weighting) is compared with
+    the exact functions averaged with the same weights: exact F_sv passes in every bin; a
+    dataset that does not say how it was binned is read as equal weights and its bin labels
+    then do not match."""
+    radius, side, m = 10.0, 64, 4
+    r_max, width = 2.5 * radius, 0.5
+    binning = RadialBinning.build((side * m,) * 2, r_max * m, width * m, angular=True)
+    exact_sv = binning.average_of(lambda d: surface_void(d / m, radius, 0.3, dim=2))
+    r = binning.r_mean / m
+    s = specific_surface(radius, 0.3, 2)
+    ds = xr.Dataset({
+        "F_sv": ("r", exact_sv), "F_sv_sem": ("r", np.full(r.size, 1e-9)),
+        "F_ss": ("r", np.zeros(r.size)), "F_ss_sem": ("r", np.full(r.size, 1e-9)),
+        "s_samples": ("sample", [s, s]), "euler_samples": ("sample", [0.0, 0.0]),
+    }, coords={"r": r}, attrs={"supersample": m, "image_side": side, "r_max": r_max,
+                               "bin_width": width, "bin_weighting": "angular"})
+    rows = debye2020.overlapping_disks_surface_rows(ds, radius=radius, phi2=0.3, compare_r_max=r_max,
+                                                    r_min=1.0, k_sigma=K_SIGMA)
+    frame = comparison_frame(rows)
+    f_sv = frame["quantity"].str.startswith("F_sv_")
+    assert f_sv.sum() > 40 and frame.loc[f_sv, "passed"].all()
+    del ds.attrs["bin_weighting"]
+    with pytest.raises(ValueError, match="bins do not match"):
+        debye2020.overlapping_disks_surface_rows(ds, radius=radius, phi2=0.3, compare_r_max=r_max,
+                                                 r_min=1.0, k_sigma=K_SIGMA)

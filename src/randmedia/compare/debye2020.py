@@ -37,14 +37,16 @@ _MEASURED = "docs/debye2020.md, 'Measured, paper config'"
 #: F_ss bins of overlapping disks at r <= F_SS_PIXEL_STEP_RANGE pixels
 F_SS_PIXEL_STEP_RANGE = 5.0
 REASON_F_SS_PIXEL_STEPS = (
-    "the level set's rounded pixel steps make F_ss alternate in sign between half-pixel bins "
-    f"by a few per cent at r <= {F_SS_PIXEL_STEP_RANGE:g} px ({_VALIDATION})")
+    "the level set keeps the pixel grid's axes and diagonals, and bins that weight every lattice "
+    "displacement alike sample those directions unevenly, so F_ss alternates in sign between "
+    f"half-pixel bins by a few per cent at r <= {F_SS_PIXEL_STEP_RANGE:g} px "
+    "(docs/debye2020.md, 'Direction average')")
 REASON_F_SS_SINGULARITY = (
     "bin next to the left-out ones at the divergence r = 2R: the digitized disks' radii scatter "
     f"by a fraction of a pixel and smear the singularity further ({_VALIDATION})")
 REASON_EULER_OVERLAPPING = (
-    "resolution: near-touching disks merge and the smallest void pockets between three disks "
-    "close at pixel resolution, so the level set's Euler characteristic falls below Mecke's "
+    "resolution: near-touching disks merge at pixel resolution (7 % fewer clusters than the "
+    "exact geometry; holes are not lost), so the level set's Euler characteristic falls below Mecke's "
     f"(-9 % at R = 10 px, -29 % at R = 6 px; {_VALIDATION})")
 REASON_PARAMETER = ("our configured value is not the paper's (by design in the quick config; "
                     "docs/debye2020.md, 'comparison.csv, paper config')")
@@ -206,10 +208,14 @@ def lineal_numbers(fits: xr.Dataset) -> "pd.DataFrame":
 
 def _fine_binning(ds: xr.Dataset) -> tuple[RadialBinning, int]:
     """The radial binning a surface-function dataset was computed on (sub-pixel grid)."""
+    from randmedia.describe.surface import surface_binning
+
     m = int(ds.attrs["supersample"])
     side = int(ds.attrs["image_side"])
-    binning = RadialBinning.build((side * m, side * m), float(ds.attrs["r_max"]) * m,
-                                  float(ds.attrs["bin_width"]) * m)
+    # datasets written before the angular weights carry no bin_weighting: equal weights
+    binning = surface_binning((side * m, side * m), m, float(ds.attrs["r_max"]),
+                              float(ds.attrs["bin_width"]),
+                              str(ds.attrs.get("bin_weighting", "lattice")))
     if not np.allclose(binning.r_mean / m, ds["r"].values):
         raise ValueError("surface dataset bins do not match the image size and r_max it claims")
     return binning, m

@@ -30,7 +30,8 @@ log.info("%s: sigma = %.4f px gives s = %.6g (exact %.6g) on %d samples", params
          s_tuned, s_target, n_tune)
 common = dict(sigma=sigma, supersample=iface["supersample"], model=iface["model"])
 surface = surface_functions(images, r_max=iface["r_max_over_length"] * length,
-                            bin_width=iface["bin_width"], log=log, **common)
+                            bin_width=iface["bin_width"], bin_weighting=iface["bin_weighting"],
+                            log=log, **common)
 seed = sample_seed(params["seed"], "debye2020", f"pores_{params['system']}", 0)
 pores = pore_size_functions(images, sample_rng(seed), delta_max=iface["delta_max_over_length"] * length,
                             delta_bin=iface["delta_bin"], k_candidates=iface["k_candidates"], log=log,
