@@ -1,7 +1,8 @@
 """Accelerated Yeong-Torquato construction of digitized two-phase media.
 
-Ma & Torquato, PRE 102, 043310 (2020), Sec. IV. A periodic L x L image with
-exactly round(phi N^2) pixels of the tracked phase is annealed towards a
+Ma & Torquato, PRE 102, 043310 (2020), Sec. IV. A periodic L x L image (or, beyond the
+paper, an N^3 voxel image: issue 13, docs/debye3d.md) with exactly round(phi N^d)
+pixels of the tracked phase is annealed towards a
 target two-point function: a trial swaps one pixel of each phase (so the
 volume fraction is conserved), with the Metropolis rule on the energy of
 Eq. (23),
@@ -48,7 +49,13 @@ works on an nz x ny x nx image raveled in C order, a 2D image being one layer
 (nz = 1). The 2D images are those of the former 2D-only kernels (commit e000202)
 bit for bit: the trajectory depends only on the random stream, the integer
 counts and the candidate-list order, which is kept (the 2D neighbours first).
-The driver :func:`construct` is still 2D (L x L).
+The driver :func:`construct` takes L (an L x L image) or a shape (ny, nx) or
+(nz, ny, nx); every scaling of the schedule uses the number of voxels N^d. The shell
+counts are held in the smallest unsigned type that holds the fullest shell
+(:func:`~randmedia.generate.yt_stencil.count_dtype`: uint8 in 2D up to l_c ~ 40, uint16
+in 3D up to l_c ~ 72; 128^3 at l_c = 32 needs 128 MiB). Checkpoint keys of an L x L
+image are those of the former 2D driver; any other shape is keyed by the shape itself,
+so a 2D and a 3D checkpoint are never confused.
 
 Phase-inversion symmetry. The kernel always tracks the minority phase
 (phase 2 when phi2 <= 1/2), the initial image and every random draw depend
@@ -57,15 +64,17 @@ share; the construction at 1 - phi2 is therefore exactly the complement of
 the one at phi2 with the same seed.
 
 Schedule (the paper fixes only the scalings, Sec. IV): total trials
-``trials_per_pixel * phi1 phi2 N^2``; initial temperature
-``initial_temperature * phi1 phi2 / N^2``, lowered geometrically stage by
+``trials_per_pixel * phi1 phi2 N^d`` (N^d voxels); initial temperature
+``initial_temperature * phi1 phi2 / N^d``, lowered geometrically stage by
 stage to ``final_temperature_ratio`` times the initial one; the last
 ``refine_fraction`` of the trials draw both pixels from the interface (pixels
 with a 4-neighbour of the other phase, kept in incrementally updated lists),
 which removes isolated islands. If Delta S2 = mean_b |S2_b - target_b| then
 exceeds the tolerance, up to ``max_extra_stages`` more refinement stages are
 run at the final temperature; a construction still above tolerance raises
-:class:`ConstructionError` -- it is never written as if it had converged.
+:class:`ConstructionError` -- it is never written as if it had converged. Each stage
+logs a progress line (trials done of the schedule's, rate, ETA from the mean rate so far:
+an overestimate early on, when most swaps are accepted and each pays for its update).
 
 Long-range stages. Beyond l_c the energy says nothing, so S2 there carries the
 image's own fluctuations (mean |S2 - target| over all bins 0 < r < L/2 of
