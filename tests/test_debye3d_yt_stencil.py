@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from randmedia.describe.two_phase import RadialBinning
-from randmedia.generate.yt_stencil import Stencil, apply_flips, shell_counts
+from randmedia.generate.yt_stencil import Stencil, apply_flips, count_dtype, shell_counts
 
 
 def brute_force_counts(image, cutoff):
@@ -83,3 +83,10 @@ def test_rejects_bad_shapes_and_overflowing_shells():
         apply_flips(np.zeros((12**3, stencil.n_columns), dtype=np.int32), stencil, [0], [1])
     with pytest.raises(ValueError, match="shape"):
         shell_counts(np.zeros((12, 12)), stencil)
+
+
+def test_count_type_is_the_smallest_unsigned_type_holding_the_fullest_shell():
+    assert [count_dtype(n) for n in (0, 255, 256, 65535, 65536, 2**32 - 1)] == [
+        np.uint8, np.uint8, np.uint16, np.uint16, np.uint32, np.uint32]
+    with pytest.raises(ValueError, match="uint32"):
+        count_dtype(2**32)
