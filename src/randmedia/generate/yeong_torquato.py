@@ -29,7 +29,7 @@ an independent check: both follow the same random trajectory to the
 bit-identical image).
 
 Applying an accepted swap at once would stream ~0.8 MB of h (L = 501: 25 MB of
-int16 counts, one cache line per updated pixel) through the cache per flipped
+16-bit counts, one cache line per updated pixel) through the cache per flipped
 pixel. Instead the flips wait in a batch (per-stage size from the acceptance
 rate, :func:`_batch_for`), bucketed by coarse cells of ~l_c/2 along each axis
 (:class:`_PendingCells`); a trial adds the pending flips within l_c of its two
