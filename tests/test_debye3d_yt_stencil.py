@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from randmedia.describe.two_phase import RadialBinning
-from randmedia.generate.yt_stencil import Stencil, apply_flips, shell_counts
+from randmedia.generate.yt_stencil import Stencil, apply_flips, count_dtype, shell_counts
 
 
 def brute_force_counts(image, cutoff):
@@ -21,7 +21,8 @@ def brute_force_counts(image, cutoff):
 
 @pytest.mark.parametrize("shape, cutoff", [((12, 13, 14), 4.5), ((11, 11, 11), 5.0),
                                            ((9, 16, 10), 4.0), ((17, 15), 7.0),
-                                           ((41, 41), 20.0), ((13, 14, 13), 6.4)])
+                                           ((41, 41), 20.0), ((13, 14, 13), 6.4),
+                                           ((14, 14, 14), 6.9)])
 def test_shell_counts_fft_and_flips_equal_brute_force(shape, cutoff):
     """Also with shells out to ~0.49 of the box (41^2, l_c = 20: the 2D long-range stages),
     where a stencil's reach wraps almost all the way round."""
@@ -30,9 +31,18 @@ def test_shell_counts_fft_and_flips_equal_brute_force(shape, cutoff):
     stencil = Stencil(shape, cutoff)
     expected = brute_force_counts(image, cutoff)
     np.testing.assert_array_equal(shell_counts(image, stencil), expected)
+    # the smallest unsigned type that holds the fullest shell
+    assert stencil.count_dtype == (np.uint8 if stencil.binning.counts[1:].max() <= 255 else np.uint16)
     # every tracked voxel applied as a +1 flip to zero counts
-    h = np.zeros((image.size, stencil.n_columns), dtype=np.int16)
-    apply_flips(h, stencil, np.flatnonzero(image), np.ones(int(image.sum()), dtype=np.int16))
+    h = np.zeros((image.size, stencil.n_columns), dtype=stencil.count_dtype)
+    tracked = np.flatnonzero(image)
+    apply_flips(h, stencil, tracked, np.ones(tracked.size, dtype=np.int16))
+    np.testing.assert_array_equal(h, expected)
+    # counts that pass below zero within a batch wrap and come back exact
+    h[:] = 0
+    apply_flips(h, stencil, tracked, -np.ones(tracked.size, dtype=np.int16))
+    assert h.max() > expected.max()  # wrapped round
+    apply_flips(h, stencil, np.concatenate([tracked, tracked]), np.ones(2 * tracked.size, dtype=np.int16))
     np.testing.assert_array_equal(h, expected)
 
 
@@ -69,7 +79,14 @@ def test_rejects_bad_shapes_and_overflowing_shells():
     with pytest.raises(ValueError, match="shape"):
         Stencil((5,), 1.0)
     stencil = Stencil((12, 12, 12), 3.0)
-    with pytest.raises(ValueError, match="int16"):
+    with pytest.raises(ValueError, match="must be uint8"):
         apply_flips(np.zeros((12**3, stencil.n_columns), dtype=np.int32), stencil, [0], [1])
     with pytest.raises(ValueError, match="shape"):
         shell_counts(np.zeros((12, 12)), stencil)
+
+
+def test_count_type_is_the_smallest_unsigned_type_holding_the_fullest_shell():
+    assert [count_dtype(n) for n in (0, 255, 256, 65535, 65536, 2**32 - 1)] == [
+        np.uint8, np.uint8, np.uint16, np.uint16, np.uint32, np.uint32]
+    with pytest.raises(ValueError, match="uint32"):
+        count_dtype(2**32)

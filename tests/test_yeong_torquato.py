@@ -163,11 +163,18 @@ def test_converges_and_matches_independent_estimator(phi2):
 
 
 def test_phase_inversion_symmetry():
-    """phi2 and 1 - phi2 run the same code: complementary images for the same seed."""
+    """phi2 and 1 - phi2 run the same code: complementary images for the same seed, the
+    same Delta S2 (of the tracked phase); the S2 of phase 2 is the exact complement,
+    S2' = 1 - 2 phi + S2 with the image's own fraction phi (691 of 48^2 pixels, not 0.3)."""
     low, high = build(0.3, seed=4), build(0.7, seed=4)
     np.testing.assert_array_equal(high.image, 1 - low.image)
-    np.testing.assert_allclose(high.s2[1:] - high.target[1:], low.s2[1:] - low.target[1:],
-                               atol=1e-14)
+    assert high.delta_s2 == pytest.approx(low.delta_s2, rel=1e-9)  # (targets: 1 - 0.7 vs 0.3)
+    assert high.energy == pytest.approx(low.energy, rel=1e-9)
+    assert high.s2[0] == 1 - low.s2[0] == 1 - 691 / SIDE**2
+    np.testing.assert_allclose(high.s2[1:], 1 - 2 * low.s2[0] + low.s2[1:], rtol=0, atol=1e-14)
+    np.testing.assert_allclose(high.s2, _Geometry((SIDE, SIDE), CUTOFF).s2(high.image.ravel()),
+                               rtol=0, atol=1e-14)
+    np.testing.assert_allclose(high.target[1:], 1 - 2 * 0.3 + low.target[1:], rtol=0, atol=1e-14)
 
 
 def test_same_seed_same_image_different_seed_different_image():

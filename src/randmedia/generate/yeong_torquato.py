@@ -1,7 +1,8 @@
 """Accelerated Yeong-Torquato construction of digitized two-phase media.
 
-Ma & Torquato, PRE 102, 043310 (2020), Sec. IV. A periodic L x L image with
-exactly round(phi N^2) pixels of the tracked phase is annealed towards a
+Ma & Torquato, PRE 102, 043310 (2020), Sec. IV. A periodic L x L image (or, beyond the
+paper, an N^3 voxel image: issue 13, docs/debye3d.md) with exactly round(phi N^d)
+pixels of the tracked phase is annealed towards a
 target two-point function: a trial swaps one pixel of each phase (so the
 volume fraction is conserved), with the Metropolis rule on the energy of
 Eq. (23),
@@ -28,7 +29,7 @@ an independent check: both follow the same random trajectory to the
 bit-identical image).
 
 Applying an accepted swap at once would stream ~0.8 MB of h (L = 501: 25 MB of
-int16 counts, one cache line per updated pixel) through the cache per flipped
+16-bit counts, one cache line per updated pixel) through the cache per flipped
 pixel. Instead the flips wait in a batch (per-stage size from the acceptance
 rate, :func:`_batch_for`), bucketed by coarse cells of ~l_c/2 along each axis
 (:class:`_PendingCells`); a trial adds the pending flips within l_c of its two
@@ -48,7 +49,13 @@ works on an nz x ny x nx image raveled in C order, a 2D image being one layer
 (nz = 1). The 2D images are those of the former 2D-only kernels (commit e000202)
 bit for bit: the trajectory depends only on the random stream, the integer
 counts and the candidate-list order, which is kept (the 2D neighbours first).
-The driver :func:`construct` is still 2D (L x L).
+The driver :func:`construct` takes L (an L x L image) or a shape (ny, nx) or
+(nz, ny, nx); every scaling of the schedule uses the number of voxels N^d. The shell
+counts are held in the smallest unsigned type that holds the fullest shell
+(:func:`~randmedia.generate.yt_stencil.count_dtype`: uint8 in 2D up to l_c ~ 40, uint16
+in 3D up to l_c ~ 72; 128^3 at l_c = 32 needs 128 MiB). Checkpoint keys of an L x L
+image are those of the former 2D driver; any other shape is keyed by the shape itself,
+so a 2D and a 3D checkpoint are never confused.
 
 Phase-inversion symmetry. The kernel always tracks the minority phase
 (phase 2 when phi2 <= 1/2), the initial image and every random draw depend
@@ -57,15 +64,17 @@ share; the construction at 1 - phi2 is therefore exactly the complement of
 the one at phi2 with the same seed.
 
 Schedule (the paper fixes only the scalings, Sec. IV): total trials
-``trials_per_pixel * phi1 phi2 N^2``; initial temperature
-``initial_temperature * phi1 phi2 / N^2``, lowered geometrically stage by
+``trials_per_pixel * phi1 phi2 N^d`` (N^d voxels); initial temperature
+``initial_temperature * phi1 phi2 / N^d``, lowered geometrically stage by
 stage to ``final_temperature_ratio`` times the initial one; the last
 ``refine_fraction`` of the trials draw both pixels from the interface (pixels
 with a 4-neighbour of the other phase, kept in incrementally updated lists),
 which removes isolated islands. If Delta S2 = mean_b |S2_b - target_b| then
 exceeds the tolerance, up to ``max_extra_stages`` more refinement stages are
 run at the final temperature; a construction still above tolerance raises
-:class:`ConstructionError` -- it is never written as if it had converged.
+:class:`ConstructionError` -- it is never written as if it had converged. Each stage
+logs a progress line (trials done of the schedule's, rate, ETA from the mean rate so far:
+an overestimate early on, when most swaps are accepted and each pays for its update).
 
 Long-range stages. Beyond l_c the energy says nothing, so S2 there carries the
 image's own fluctuations (mean |S2 - target| over all bins 0 < r < L/2 of
@@ -96,6 +105,7 @@ from randmedia.describe.two_phase import RadialBinning, periodic_autocorrelation
 from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
 from randmedia.generate import refuse_invalid
 from randmedia.generate.yt_stencil import Stencil, apply_flips_kernel, shell_counts
+from randmedia.progress import Progress
 
 # face neighbours (dz, dy, dx) of the interface test: the 2D four first, in the order the
 # 2D construction always used (candidate-list order, hence trajectories, unchanged), then z
@@ -484,7 +494,8 @@ class _Geometry:
         # pending-flip lookup cells about l_c / 2 wide along each axis: in 2D the cells met
         # by a pixel's l_c-disk cover about twice the disk's area (3 x 3 cells of width l_c:
         # ~3x); no wider than the part of the ring outside a voxel's window, so that no cell
-        # is met at both ends of it (matters only for l_c close to L/2)
+        # is met at both ends of it (matters only for l_c close to L/2, where the cells get
+        # narrow and many: keep L >= 2.5 l_c + 1 for speed, in 3D especially)
         per_length = {n: _PendingCells(n, self.cutoff,
                                        min((self.cutoff + 1) // 2, n - 2 * self.cutoff - 1)).arrays()
                       for n in set(self.stencil.shape3)}
@@ -502,16 +513,29 @@ class _Geometry:
         """Shell counts h of every voxel (:func:`~randmedia.generate.yt_stencil.shell_counts`),
         or with ``scan`` a placeholder (the disk-scan baseline keeps none)."""
         if scan:
-            return np.zeros((1, self.n_columns), dtype=np.int16)
+            return np.zeros((1, self.n_columns), dtype=self.stencil.count_dtype)
         return shell_counts(image_flat.reshape(self.shape), self.stencil)
 
     def s2(self, image_flat: np.ndarray, counts: np.ndarray | None = None) -> np.ndarray:
         """S2 of the tracked phase per bin (0..n_b), exactly, from the shell counts
-        (recounted from the image unless ``counts`` are given)."""
+        (recounted from the image unless ``counts`` are given). Summed in chunks of voxels
+        (exact integers), so that no int64 copy of the tracked voxels' counts is made
+        (268 MB at 128^3, l_c = 32, twice the counts themselves)."""
         if counts is None:
             counts = self.shell_counts(image_flat)
-        pair_sums = (counts[image_flat == 1].astype(np.int64)).sum(axis=0)
+        pair_sums = np.zeros(self.n_columns, dtype=np.int64)
+        chunk = 1 << 16
+        for start in range(0, image_flat.size, chunk):
+            mine = image_flat[start:start + chunk] == 1
+            pair_sums += counts[start:start + chunk][mine].sum(axis=0, dtype=np.int64)
         return np.concatenate([[image_flat.mean()], pair_sums * self.norm])
+
+    def describe(self) -> str:
+        """One log line: bins, stencil, count type and memory, pending-flip cells."""
+        cells = "x".join(str(c[0]) for c in self.cells[3 - len(self.shape):])
+        return (f"{self.n_columns} bins 0 < r <= {self.cutoff}, stencil {self.stencil.offsets.shape[0]} "
+                f"voxels, fullest shell {self.stencil.largest_shell} -> {self.stencil.count_dtype} "
+                f"shell counts {self.stencil.counts_bytes() / 2**20:.0f} MiB, pending-flip cells {cells}")
 
 
 def _batch_for(acceptance: float, largest: int) -> int:
@@ -527,13 +551,33 @@ def _batch_for(acceptance: float, largest: int) -> int:
     return int(min(largest, max(256, 2 ** round(math.log2(best)))))
 
 
-def _validate(phi2: float, side: int, cutoff: float) -> None:
+def image_shape(side) -> tuple[int, ...]:
+    """The image shape of ``side``: an integer L (an L x L image, as in the paper) or a
+    shape (ny, nx) or (nz, ny, nx) of integers >= 4; ValueError otherwise."""
+    def integer(n):
+        return isinstance(n, (int, np.integer)) and not isinstance(n, (bool, np.bool_))
+
+    if integer(side):
+        if side < 4:
+            raise ValueError(f"L must be an integer >= 4 pixels (the image is L x L), got {side!r}")
+        return (int(side), int(side))
+    if isinstance(side, (tuple, list, np.ndarray)):
+        shape = tuple(side)
+        if len(shape) in (2, 3) and all(integer(n) and n >= 4 for n in shape):
+            return tuple(int(n) for n in shape)
+        raise ValueError(f"the image shape must be (ny, nx) or (nz, ny, nx), 2 or 3 integers "
+                         f">= 4 voxels, got {side!r}")
+    raise ValueError(f"L must be an integer >= 4 pixels (the image is L x L), or the image "
+                     f"shape (ny, nx) or (nz, ny, nx), got {side!r}")
+
+
+def _validate(phi2: float, shape: tuple[int, ...], cutoff: float) -> None:
     if not 0.0 < phi2 < 1.0:
         raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
-    if not isinstance(side, (int, np.integer)) or side < 4:
-        raise ValueError(f"L must be an integer >= 4 pixels (the image is L x L), got {side!r}")
-    if not 1.0 <= cutoff < side / 2:
-        raise ValueError(f"cutoff l_c must satisfy 1 <= l_c < L/2 = {side / 2:g}, got {cutoff}")
+    shortest = min(shape)
+    if not 1.0 <= cutoff < shortest / 2:
+        raise ValueError(f"cutoff l_c must satisfy 1 <= l_c < L/2 = {shortest / 2:g} "
+                         f"(L the shortest side of the {'x'.join(map(str, shape))} image), got {cutoff}")
 
 
 def tracked_target(target_s2: Callable, phi2: float, binning: RadialBinning) -> tuple[float, np.ndarray]:
@@ -556,7 +600,7 @@ def tracked_target(target_s2: Callable, phi2: float, binning: RadialBinning) -> 
 def construct(
     target_s2: Callable[[np.ndarray], np.ndarray],
     phi2: float,
-    side: int,
+    side,
     cutoff: float,
     rng: np.random.Generator,
     schedule: AnnealingSchedule = AnnealingSchedule(),
@@ -567,25 +611,33 @@ def construct(
     scan: bool = False,
     batch: int = 4096,
 ) -> Construction:
-    """Construct an L x L periodic image (1 = phase 2) with S2 of phase 2 close to ``target_s2``.
+    """Construct a periodic image (1 = phase 2) with S2 of phase 2 close to ``target_s2``.
 
+    ``side``: L for an L x L image (the paper's 2D media), or the image shape (ny, nx)
+    or (nz, ny, nx) -- e.g. (N, N, N) for 3D media (:func:`image_shape`). Every count of
+    the schedule scales with the number of voxels N^d (trials, temperature), so a 2D
+    construction is the same whichever way its shape is given, and bit-identical to the
+    former 2D-only driver.
     ``checkpoint``: file to save the state to (image + random state, at stage
     boundaries, at most every ``checkpoint_seconds``) and to resume from if it
-    exists and belongs to the same construction; it is removed on success.
+    exists and belongs to the same construction (same parameters, shape and dimension
+    included, and start state); it is removed on success.
     ``scan``: use the straightforward per-trial disk scan (benchmark baseline).
-    ``batch``: pixel flips (two per accepted swap) collected before they are applied
+    ``batch``: voxel flips (two per accepted swap) collected before they are applied
     to the shell counts; a performance knob only -- any value gives the same image.
     """
     if not isinstance(batch, (int, np.integer)) or batch < 2:
         raise ValueError(f"batch must be an integer >= 2, got {batch!r}")
-    _validate(phi2, side, cutoff)
+    shape = image_shape(side)
+    _validate(phi2, shape, cutoff)
     log = log or logging.getLogger(__name__)
-    geometry = _Geometry((side, side), cutoff)
+    geometry = _Geometry(shape, cutoff)
     phi, target = tracked_target(target_s2, phi2, geometry.binning)
-    n_pixels = side * side
+    n_pixels = int(np.prod(shape))
     n_tracked = int(round(phi * n_pixels))
+    name = "x".join(map(str, shape))
     if n_tracked == 0:
-        raise ValueError(f"phi2 = {phi2} leaves no pixel of the minority phase on {side}^2 pixels")
+        raise ValueError(f"phi2 = {phi2} leaves no voxel of the minority phase on {name} voxels")
     weight = phi * (1.0 - phi)
     total_trials = int(schedule.trials_per_pixel * weight * n_pixels)
     t_initial = schedule.initial_temperature * weight / n_pixels
@@ -597,14 +649,16 @@ def construct(
         k = min(stage, n_cool - 1)
         return t_initial * schedule.final_temperature_ratio ** (k / max(1, n_cool - 1))
 
-    key = _checkpoint_key(phi2, side, cutoff, target, schedule, rng, scan)
+    key = _checkpoint_key(phi2, shape, cutoff, target, schedule, rng, scan)
     stage, long_range_done, image = 0, 0, None
     if checkpoint is not None:
-        stage, long_range_done, image = _load_checkpoint(checkpoint, key, rng, log)
+        stage, long_range_done, image = _load_checkpoint(checkpoint, key, rng, log, n_pixels)
     if image is None:
         image = np.zeros(n_pixels, dtype=np.uint8)
         image[rng.permutation(n_pixels)[:n_tracked]] = 1
 
+    log.info("YT construction %s, phi2 = %g, %s; %d stages of %d trials", name, phi2,
+             geometry.describe(), schedule.n_stages, trials_per_stage)
     h = geometry.shell_counts(image, scan)
     diff = geometry.s2(image, None if scan else h)[1:] - target[1:]
     started, last_save = time.perf_counter(), time.perf_counter()
@@ -612,22 +666,28 @@ def construct(
     last_stage = schedule.n_stages + schedule.max_extra_stages
     delta_s2 = float(np.mean(np.abs(diff)))
     stage_batch = batch
+    progress = Progress(schedule.n_stages * trials_per_stage, f"YT {name}", log, unit="trials",
+                        start=min(stage, schedule.n_stages) * trials_per_stage)
+    per_stage = []  # this run's stages: trials, accepted, wall and CPU seconds, Delta S2
     while stage < last_stage and long_range_done == 0:  # (resumed in a long-range stage: done)
         if stage >= schedule.n_stages and delta_s2 <= schedule.tolerance:
             break
-        tic = time.perf_counter()
+        tic, cpu = time.perf_counter(), time.process_time()
         accepted = _anneal(image, h, diff, trials_per_stage, temperature(stage), stage >= n_cool,
                            scan, rng, stage_batch, *geometry.kernel_args())
         stage += 1
         elapsed = time.perf_counter() - tic
+        per_stage.append({"stage": stage, "trials": trials_per_stage, "accepted": int(accepted),
+                          "seconds": elapsed, "cpu_seconds": time.process_time() - cpu,
+                          "delta_s2": float(np.mean(np.abs(diff)))})
         trials_done += trials_per_stage
         accepted_total += accepted
         stage_batch = _batch_for(accepted / trials_per_stage, batch)
         delta_s2 = float(np.mean(np.abs(diff)))
-        remaining = max(0, schedule.n_stages - stage) * elapsed
-        log.info("stage %d/%d T=%.3g: %.3g trials/s, acceptance %.4f, E=%.4g, dS2=%.3g, ETA %.0f s",
-                 stage, schedule.n_stages, temperature(stage - 1), trials_per_stage / elapsed,
-                 accepted / trials_per_stage, float(np.sum(diff**2)), delta_s2, remaining)
+        progress.step(trials_per_stage, detail=(
+            f"stage {stage}/{schedule.n_stages} T={temperature(stage - 1):.3g}: {elapsed:.3g} s, "
+            f"{trials_per_stage / elapsed:.3g} trials/s, acceptance {accepted / trials_per_stage:.4f}, "
+            f"E={float(np.sum(diff**2)):.4g}, dS2={delta_s2:.3g}"))
         if checkpoint is not None and time.perf_counter() - last_save >= checkpoint_seconds:
             _save_checkpoint(checkpoint, key, stage, 0, image, rng)
             last_save = time.perf_counter()
@@ -636,7 +696,7 @@ def construct(
     if long_range_done < schedule.long_range_stages and (delta_s2 <= schedule.tolerance
                                                          or long_range_done > 0):
         del h
-        far = _Geometry((side, side), math.floor(schedule.long_range_cutoff_over_L * side))
+        far = _Geometry(shape, math.floor(schedule.long_range_cutoff_over_L * min(shape)))
         _, far_target = tracked_target(target_s2, phi2, far.binning)
         tic = time.perf_counter()
         h = far.shell_counts(image, scan)
@@ -659,27 +719,30 @@ def construct(
                 _save_checkpoint(checkpoint, key, stage, long_range_done, image, rng)
                 last_save = time.perf_counter()
         accepted_total += long_range_accepted
+    del h
 
     # final S2 from the FFT estimator: independent of the incremental bookkeeping
-    s2_tracked = geometry.binning.average(periodic_autocorrelation(image.reshape(side, side)))
+    s2_tracked = geometry.binning.average(periodic_autocorrelation(image.reshape(shape)))
     delta_s2 = float(np.mean(np.abs(s2_tracked[1:] - target[1:])))
     seconds = time.perf_counter() - started
     stats = {"trials": trials_done, "accepted": accepted_total, "stages": stage,
              "long_range_stages": long_range_done, "long_range_accepted": long_range_accepted,
-             "seconds": seconds, "schedule": asdict(schedule)}
+             "seconds": seconds, "schedule": asdict(schedule), "per_stage": per_stage}
     if delta_s2 > schedule.tolerance:
         raise ConstructionError(
             f"construction did not converge: Delta S2 = {delta_s2:.3g} > tolerance "
-            f"{schedule.tolerance:g} after {stage} stages (phi2 = {phi2}, L = {side}, l_c = {cutoff})"
+            f"{schedule.tolerance:g} after {stage} stages (phi2 = {phi2}, {name} voxels, l_c = {cutoff})"
         )
     if checkpoint is not None:
         Path(checkpoint).unlink(missing_ok=True)
     tracked_is_phase2 = phi2 <= 0.5
     phase2 = image if tracked_is_phase2 else 1 - image
-    s2_phase2 = s2_tracked if tracked_is_phase2 else _complement_s2(s2_tracked, phi)
+    # the measured S2 complements with the image's own fraction (s2_tracked[0]; round(phi N^d)
+    # voxels, not exactly phi), the target with the nominal one
+    s2_phase2 = s2_tracked if tracked_is_phase2 else _complement_s2(s2_tracked, s2_tracked[0])
     target_phase2 = target if tracked_is_phase2 else _complement_s2(target, phi)
     return Construction(
-        image=phase2.reshape(side, side).astype(np.uint8),
+        image=phase2.reshape(shape).astype(np.uint8),
         delta_s2=delta_s2,
         energy=float(np.sum((s2_tracked[1:] - target[1:]) ** 2)),
         s2=s2_phase2,
@@ -699,9 +762,17 @@ def _complement_s2(s2_tracked: np.ndarray, phi: float) -> np.ndarray:
 # --------------------------------------------------------------------------- checkpoints
 
 
-def _checkpoint_key(phi2, side, cutoff, target, schedule, rng, scan) -> str:
-    """Identifies a construction: parameters, target and the random state it started from."""
-    return checkpoint_key(phi2=phi2, L=side, lc=cutoff, schedule=asdict(schedule), scan=scan,
+def _checkpoint_key(phi2, shape, cutoff, target, schedule, rng, scan) -> str:
+    """Identifies a construction: parameters, target and the random state it started from.
+
+    An L x L image keeps the key of the former 2D-only driver (``L``), so its checkpoints
+    stay valid; any other shape (3D, or a non-square 2D image) is named by its whole shape,
+    so that a checkpoint of one dimension is never taken for one of another."""
+    if len(shape) == 2 and shape[0] == shape[1]:
+        where = {"L": shape[0]}
+    else:
+        where = {"shape": list(shape), "dimension": len(shape)}
+    return checkpoint_key(phi2=phi2, **where, lc=cutoff, schedule=asdict(schedule), scan=scan,
                           target=array_digest(target), rng=rng.bit_generator.state)
 
 
@@ -709,10 +780,16 @@ def _save_checkpoint(path, key, stage, long_range_done, image, rng) -> None:
     save_checkpoint(path, key, {"stage": stage, "long_range_done": long_range_done, "image": image}, rng)
 
 
-def _load_checkpoint(path, key, rng, log):
+def _load_checkpoint(path, key, rng, log, n_voxels):
+    state = rng.bit_generator.state
     data = load_checkpoint(path, key, log, rng)
     if data is None:
         return 0, 0, None
     stage, long_range_done, image = int(data["stage"]), int(data["long_range_done"]), data["image"]
+    if image.shape != (n_voxels,) or image.dtype != np.uint8:  # (the key names the shape)
+        log.warning("%s holds an image of %s %s, not %d voxels; starting afresh", path,
+                    image.dtype, image.shape, n_voxels)
+        rng.bit_generator.state = state
+        return 0, 0, None
     log.info("resumed from %s at stage %d (+ %d long-range stages)", path, stage, long_range_done)
     return stage, long_range_done, image

@@ -38,8 +38,22 @@ from numba import njit
 
 from randmedia.describe.two_phase import RadialBinning
 
-#: largest shell count int16 counts can hold (3D: l_c <= 50 voxels; l_c = 51 would need uint16)
-_INT16_MAX = np.iinfo(np.int16).max
+#: the shell-count types, smallest first: a count lies in [0, largest shell], so the
+#: smallest unsigned type holding the fullest shell holds every count (uint8 up to 255 voxels
+#: per shell: 2D l_c <~ 40; uint16 up to 65535: 3D l_c <= 72)
+COUNT_TYPES = (np.uint8, np.uint16, np.uint32)
+
+
+def count_dtype(largest_shell: int) -> np.dtype:
+    """The smallest unsigned integer type holding every shell count (0..largest_shell).
+
+    A batch adds its flips in any order, so a count may pass through values outside
+    [0, largest_shell] before the batch ends; unsigned arithmetic wraps modulo 2^bits
+    (numba stores truncate), so the counts are exact again once the batch is applied."""
+    for dtype in COUNT_TYPES:
+        if largest_shell <= np.iinfo(dtype).max:
+            return np.dtype(dtype)
+    raise ValueError(f"a shell of {largest_shell} voxels is more than uint32 counts can hold")
 
 
 def _as_3d_shape(shape) -> tuple[int, int, int]:
@@ -64,9 +78,8 @@ class Stencil:
         self.offsets = np.ascontiguousarray(vectors[order], dtype=np.int64)  # (m, 3) as (dz, dy, dx)
         self.column = np.ascontiguousarray((self.binning.bin_of[keep] - 1)[order], dtype=np.int64)
         self.n_columns = int(self.binning.counts.size - 1)
-        if self.binning.counts[1:].max() > _INT16_MAX:
-            raise ValueError(f"cutoff {cutoff:g}: a shell holds {self.binning.counts[1:].max()} "
-                             f"voxels, more than int16 shell counts can hold")
+        self.largest_shell = int(self.binning.counts[1:].max())
+        self.count_dtype = count_dtype(self.largest_shell)
         self.cutoff = int(math.floor(cutoff))
         c = self.cutoff
         # column by squared length: bin = rint(sqrt(d2)) as in RadialBinning (bin width 1);
@@ -98,6 +111,10 @@ class Stencil:
         run_start = np.repeat(lo, hi - lo)
         self.run_address = (self.column + (np.arange(len(o)) - run_start) * self.n_columns).astype(np.int64)
 
+    def counts_bytes(self) -> int:
+        """Bytes of the shell counts h of every voxel (n_voxels x n_columns of count_dtype)."""
+        return int(np.prod(self.shape)) * self.n_columns * self.count_dtype.itemsize
+
     def kernel_arrays(self):
         """The arrays :func:`apply_flips_kernel` takes after ``n_flips``, in its argument order."""
         return (self.cutoff, self.reach_y, self.run_first, self.run_count, self.run_lo, self.run_hi,
@@ -106,16 +123,16 @@ class Stencil:
 
 def shell_counts(image: np.ndarray, stencil: Stencil) -> np.ndarray:
     """h[x, c] = number of tracked voxels (image == 1) at displacements of bin c + 1 from
-    voxel x (x raveled in C order), shape (n_voxels, n_columns), int16: per bin, the
-    periodic correlation of the image with the bin's shell by FFT, rounded (counts
-    < 2^15, FFT error ~1e-10)."""
+    voxel x (x raveled in C order), shape (n_voxels, n_columns), of the smallest type
+    holding the fullest shell (``stencil.count_dtype``): per bin, the periodic
+    correlation of the image with the bin's shell by FFT, rounded (FFT error ~1e-10)."""
     import scipy.fft
 
     image = np.asarray(image)
     if image.shape != stencil.shape:
         raise ValueError(f"image shape {image.shape} != stencil shape {stencil.shape}")
     shape, d = stencil.shape, len(stencil.shape)
-    h = np.empty((image.size, stencil.n_columns), dtype=np.int16)
+    h = np.empty((image.size, stencil.n_columns), dtype=stencil.count_dtype)
     spectrum = scipy.fft.rfftn(image.astype(np.float64))
     shell = np.zeros(shape)
     index = tuple(stencil.offsets[:, 3 - d + a] % shape[a] for a in range(d))
@@ -216,7 +233,8 @@ def apply_flips(h: np.ndarray, stencil: Stencil, flips: np.ndarray, signs: np.nd
     flips = np.ascontiguousarray(flips, dtype=np.int64)
     signs = np.ascontiguousarray(signs, dtype=np.int16)
     n = flips.size if n_flips is None else int(n_flips)
-    if h.shape != (int(np.prod(stencil.shape)), stencil.n_columns) or h.dtype != np.int16:
-        raise ValueError(f"h must be int16 of shape (n_voxels, n_columns), got {h.dtype} {h.shape}")
+    if h.shape != (int(np.prod(stencil.shape)), stencil.n_columns) or h.dtype != stencil.count_dtype:
+        raise ValueError(f"h must be {stencil.count_dtype} of shape (n_voxels, n_columns) = "
+                         f"({int(np.prod(stencil.shape))}, {stencil.n_columns}), got {h.dtype} {h.shape}")
     nz, ny, nx = stencil.shape3
     apply_flips_kernel(h, nz, ny, nx, flips, signs, n, *stencil.kernel_arrays())
