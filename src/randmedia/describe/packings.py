@@ -60,7 +60,6 @@ from __future__ import annotations
 import math
 
 import numpy as np
-import xarray as xr
 from numba import njit
 
 from randmedia.periodic import Cell
@@ -380,68 +379,3 @@ def contact_number(positions, box, diameter: float = 1.0, r: float = 1e-3) -> di
         "z_B4": F_ss * 4.0 * diameter / s,
         "n_within": 2.0 * np.count_nonzero(rho < diameter + r) / n,
     }
-
-
-def correlation_dataset(samples, r, diameter: float = 1.0, contact_r: float = 1e-3,
-                        attrs=None) -> xr.Dataset:
-    """Appendix-A functions of several packings: per-sample values, mean and SEM over samples.
-
-    ``samples`` is an iterable of (positions, box). Normalized versions F_sv/s,
-    F_ss/s^2, F*_sv/s, F*_ss/s^2 are formed per sample before averaging.
-    """
-    from randmedia.stats import standard_error
-
-    r = np.asarray(r, dtype=float)
-    rows = {name: [] for name in CORRELATION_VARIABLES}
-    scalars = {name: [] for name in ("phi", "s", "rho", "n", "volume", "z_B3", "z_B4", "n_within")}
-    for positions, box in samples:
-        values = correlation_functions(positions, box, r, diameter)
-        for name in CORRELATION_VARIABLES:
-            rows[name].append(values[name])
-        for name in ("phi", "s", "rho", "n", "volume"):
-            scalars[name].append(values[name])
-        contacts = contact_number(positions, box, diameter, contact_r)
-        for name in ("z_B3", "z_B4", "n_within"):
-            scalars[name].append(contacts[name])
-    if not rows["S2"]:
-        raise ValueError("no samples given")
-    per = {name: np.array(values) for name, values in rows.items()}
-    s = np.array(scalars["s"])[:, None]
-    per["F_sv_over_s"] = per["F_sv"] / s
-    per["F_ss_over_s2"] = per["F_ss"] / s**2
-    per["F_sv_two_body_over_s"] = per["F_sv_two_body"] / s
-    per["F_ss_two_body_over_s2"] = per["F_ss_two_body"] / s**2
-    units = {"S2": "1", "F_sv": "1/D", "F_ss": "1/D^2", "F_sv_two_body": "1/D",
-             "F_ss_two_body": "1/D^2", "F_sv_over_s": "1", "F_ss_over_s2": "1",
-             "F_sv_two_body_over_s": "1", "F_ss_two_body_over_s2": "1"}
-    names = {"S2": "two-point correlation function of the sphere phase (Eq. A1)",
-             "F_sv": "surface-void correlation function, matrix = void (Eqs. A12, 7)",
-             "F_ss": "surface-surface correlation function (Eq. A16)",
-             "F_sv_two_body": "two-body part F*_sv of the surface-void function (Eq. B1)",
-             "F_ss_two_body": "two-body part F*_ss of the surface-surface function (Eq. B2)",
-             "F_sv_over_s": "F_sv / s", "F_ss_over_s2": "F_ss / s^2",
-             "F_sv_two_body_over_s": "F*_sv / s", "F_ss_two_body_over_s2": "F*_ss / s^2"}
-    data = {}
-    for name, values in per.items():
-        with np.errstate(invalid="ignore"):
-            data[name] = (("sample", "r"), values, {"units": units[name], "long_name": names[name]})
-            data[f"{name}_mean"] = (("r",), values.mean(axis=0),
-                                    {"units": units[name], "long_name": f"{names[name]}, mean over samples"})
-            data[f"{name}_sem"] = (("r",), standard_error(values, axis=0),
-                                   {"units": units[name], "long_name": f"{names[name]}, standard error of the mean"})
-    scalar_meta = {"phi": ("1", "packing fraction N v_D / V"), "s": ("1/D", "specific surface N a_D / V"),
-                   "rho": ("1/D^3", "number density N / V"), "n": ("1", "number of spheres"),
-                   "volume": ("D^3", "cell volume"),
-                   "z_B3": ("1", f"mean contact number from the slope of F*_sv (Eq. B3) at r = {contact_r:g} D"),
-                   "z_B4": ("1", f"mean contact number from F*_ss (Eq. B4) at r = {contact_r:g} D"),
-                   "n_within": ("1", f"2 x (pairs with gap < {contact_r:g} D) / N")}
-    for name, values in scalars.items():
-        unit, long_name = scalar_meta[name]
-        data[name] = (("sample",), np.array(values, dtype=float), {"units": unit, "long_name": long_name})
-    ds = xr.Dataset(
-        data,
-        coords={"r": ("r", r, {"units": "D", "long_name": "distance r"}),
-                "sample": ("sample", np.arange(len(per["S2"])), {"units": "1", "long_name": "sample index"})},
-        attrs={**dict(attrs or {}), "diameter": float(diameter), "contact_r": float(contact_r)},
-    )
-    return ds
