@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import time
+from typing import Callable
 
 
 class Progress:
@@ -36,10 +37,11 @@ class Progress:
         self.done = self.start_done = start
         self.start = self.last_line = time.monotonic()
 
-    def step(self, count: int = 1, detail: str = "", *, total: int | None = None,
+    def step(self, count: int = 1, detail: str | Callable[[], str] = "", *, total: int | None = None,
              force: bool = False) -> None:
-        """``count`` more units done; ``detail`` is appended to the line after '; '. ``total``
-        replaces the total (a new estimate); ``force`` logs even within ``every`` seconds."""
+        """``count`` more units done; ``detail`` (or what it returns, called only when a line
+        is written) is appended to the line after '; '. ``total`` replaces the total (a new
+        estimate); ``force`` logs even within ``every`` seconds."""
         self.done += count
         if total is not None:
             self.total = total
@@ -49,6 +51,8 @@ class Progress:
         if not force and now - self.last_line < self.every:
             return
         self.last_line = now
+        if callable(detail):
+            detail = detail()
         elapsed = now - self.start
         rate = (self.done - self.start_done) / elapsed if elapsed > 0 else float("inf")
         if self.total is None:

@@ -505,7 +505,7 @@ def run_fluid(potential: Potential, radius: float, density: float, temperature: 
             state["running_energy"] = exact
             if state["sweep"] == n_eq:
                 state["energy"][n_eq - 1] = exact
-        progress.step(length, force=state["sweep"] in (n_tune, n_eq, total), detail=(
+        progress.step(length, force=state["sweep"] in (n_tune, n_eq, total), detail=lambda: (
             f"{'production' if producing else 'equilibration'}, "
             f"{length / max(elapsed, 1e-12) * pair_evaluations_per_sweep:.3g} pair evaluations/s, "
             f"acceptance {float(np.mean(acceptances)):.3f}, step {state['step']:.4f}, "
