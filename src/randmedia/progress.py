@@ -59,6 +59,7 @@ class Progress:
             self.log.info("%s: %d %s, %.3g %s/s%s", self.what, self.done, self.unit, rate, self.unit,
                           f"; {detail}" if detail else "")
             return
-        eta = max(0, self.total - self.done) / rate if rate > 0 else float("inf")
+        remaining = max(0, self.total - self.done)
+        eta = remaining / rate if rate > 0 else (0.0 if remaining == 0 else float("inf"))
         self.log.info("%s: %d/%d %s, %.3g %s/s, ETA %.0f s%s", self.what, self.done, self.total, self.unit,
                       rate, self.unit, eta, f"; {detail}" if detail else "")
