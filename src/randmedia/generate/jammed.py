@@ -444,7 +444,7 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         trust = next_trust
         for name in _HISTORY_KEYS + ("trust_next",):
             history[name].append(record[name])
-        _report(progress, history, dim)
+        _report(progress, history, dim, params.max_lps)
 
     run.loop(step, finished, lambda: _checkpoint_arrays(positions, box, history))
     log.info("converged after %d LPs in %.1f s (%.1f s CPU): phi = %.6f", len(history["phi"]),
@@ -456,20 +456,24 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
                          history={k: np.asarray(v) for k, v in history.items()}, params=params)
 
 
-def _report(progress, history, dim) -> None:
-    """Progress line after an LP; the total (hence ETA) is a rough estimate: the LPs to
-    compress at the current per-LP growth of phi up to a typical jamming density (0.64 in 3D,
-    0.84 in 2D), plus ~50 LPs of final convergence."""
+def _report(progress, history, dim, max_lps: int) -> None:
+    """Progress line after an LP. The total (hence the ETA) is an estimate, never beyond
+    ``max_lps``, where the run stops in any case: the LPs to compress at the current per-LP
+    growth of phi up to a typical jamming density (0.64 in 3D, 0.84 in 2D), plus ~50 LPs of
+    final convergence. Near jamming (the MRJ polish ends at phi ~ 0.637 with growth ~0) the
+    extrapolation diverges, so there the total is ``max_lps`` and the ETA an upper bound."""
     done = len(history["phi"])
     phi = history["phi"][-1]
     recent = np.asarray(history["phi"][-20:])
     growth = (recent[-1] - recent[0]) / max(len(recent) - 1, 1)
     target = 0.64 if dim == 3 else 0.84
     remaining = 50 + (max(target - phi, 0.0) / growth if growth > 0 else 0.0)
-    progress.step(1, total=done + int(round(remaining)), detail=lambda: (
+    total = min(max_lps, done + int(min(round(remaining), max_lps)))
+    progress.step(1, total=total, detail=lambda: (
         f"phi = {phi:.6f}, Tr eps = {history['trace'][-1]:.3g}, rescale - 1 = "
         f"{history['rescale'][-1] - 1:.2g}, {history['rows'][-1]} rows (last LP solve "
-        f"{history['seconds'][-1]:.2f} s, {history['cpu'][-1]:.2f} s CPU)"))
+        f"{history['seconds'][-1]:.2f} s, {history['cpu'][-1]:.2f} s CPU)"
+        + (f"; ETA = the bound max_lps = {max_lps}" if total == max_lps else "")))
 
 
 # --------------------------------------------------------------------------- checkpoints
