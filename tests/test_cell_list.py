@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 
 from randmedia import cell_list as cl
+from randmedia.generate.hard_particles.kernels import _overlaps
 from randmedia.periodic import Cell, min_pair_distance
 
 
@@ -75,8 +76,8 @@ def test_cell_index_clips_the_upper_face_and_minimum_image_is_nearest():
 @pytest.mark.parametrize("cells_per_side", [1, 2, 3, 5])
 def test_pairs_through_the_member_table_equal_brute_force(dim, cells_per_side):
     """Every pair whose nearest image is closer than the cutoff 1 is found exactly once in the
-    3^d neighbour cells (one cell per side: a box shorter than 2 cutoffs), and the overlap
-    test agrees with brute force for random query points."""
+    3^d neighbour cells (one cell per side: a box shorter than 2 cutoffs), and the
+    hard-particle overlap test on the member table agrees with brute force at random points."""
     rng = np.random.default_rng(10 * dim + cells_per_side)
     lengths, lengths3, pos3 = random_setup(rng, dim, cells_per_side, 40)
     cutoff = 1.0
@@ -102,9 +103,8 @@ def test_pairs_through_the_member_table_equal_brute_force(dim, cells_per_side):
         q = np.zeros(3)
         q[:dim] = rng.random(dim) * lengths
         skip = int(rng.integers(-1, len(pos3)))
-        c = cl.cell_index(q[0], q[1], q[2], lengths3, table.ncell)
-        got = cl.any_within(skip, c, q[0], q[1], q[2], pos3, lengths3, table.ncell, table.members,
-                            table.count, cutoff**2, scratch)
+        got = _overlaps(skip, q[0], q[1], q[2], pos3, lengths3, table.ncell, table.members,
+                        table.count, cutoff**2, scratch)
         dq = np.sum(brute_min_image(pos3[:, :dim] - q[:dim], lengths) ** 2, axis=1)
         if skip >= 0:
             dq[skip] = np.inf

@@ -11,8 +11,8 @@ Storages (both filled by cell index, both numba-compatible arrays):
 * **member table** (:class:`MemberTable`, :func:`insert`, :func:`remove`,
   :func:`build_members`): ``members[cell, slot]`` with ``count[cell]`` and, per
   particle, ``cell_of`` and ``slot_of``; O(1) insertion and removal, for
-  configurations that change particle by particle (Monte Carlo moves, random
-  sequential addition). Orthogonal boxes, positions in [0, L).
+  configurations that change particle by particle (the hard-particle Monte Carlo
+  and its random sequential addition). Orthogonal boxes, positions in [0, L).
 * **sorted cells** (:class:`SortedCells`): the points of a fixed set ordered by
   cell, with ``start[flat] .. start[flat + 1]`` the points of a cell (compressed
   rows, neighbours in memory); for many queries against one set, in any
@@ -24,7 +24,7 @@ Walks:
   cell itself included). With cells at least as wide as the cutoff r_c and a box
   of at least 2 r_c (minimum image unique), every neighbour within r_c of a point
   lies in them; along an axis with fewer than 3 cells the images coincide and are
-  listed once. :func:`any_within` is the overlap test on a member table.
+  listed once.
 * :func:`periodic_cell` + :func:`image_cell` -- for walks that go several cells
   (and periodic images) away from the query cell: an unwrapped cell index is split
   into a lattice shift and the stored cell, and the shift becomes a Cartesian
@@ -34,9 +34,15 @@ Walks:
 
 Sites with a different structure (see their docstrings): the event-driven
 Lubachevsky-Stillinger compression keeps its doubly linked cell lists (cell
-crossings are events there, the cell of a sphere is tracked, not computed), and
+crossings are events there, the cell of a sphere is tracked, not computed);
+:mod:`randmedia.generate.rsa` keeps its insertion-only head/next lists on (n, d)
+points (d-generic, no capacity; the member table measured 1.2-1.8x slower there);
 :func:`randmedia.periodic.pairs_within` keeps a k-d tree on padded images (all
 pairs of a triclinic cell in one vectorized call, outside numba loops).
+
+Numba caches a kernel by its own source file only: after editing this module,
+clear the numba cache (``.cache/numba`` of the workflow, ``__pycache__``) so that
+the kernels importing it are recompiled.
 """
 
 from __future__ import annotations
@@ -56,7 +62,7 @@ CELL_CAPACITY = {2: 16, 3: 64}
 # --------------------------------------------------------------------------- cell indices
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def cell_coordinate(f, n):
     """Cell index along an axis of n cells of a fractional coordinate f in [0, 1]."""
     return min(int(f * n), n - 1)
@@ -80,8 +86,10 @@ def cell_triple(flat, ncell):
 @njit(cache=True)
 def cell_index(x, y, z, box, ncell):
     """Flat cell of the point (x, y, z) in [0, box[k]) of an orthogonal box with lengths box."""
-    return flat_index(cell_coordinate(x / box[0], ncell[0]), cell_coordinate(y / box[1], ncell[1]),
-                      cell_coordinate(z / box[2], ncell[2]), ncell)
+    cx = min(int(x / box[0] * ncell[0]), ncell[0] - 1)
+    cy = min(int(y / box[1] * ncell[1]), ncell[1] - 1)
+    cz = min(int(z / box[2] * ncell[2]), ncell[2] - 1)
+    return (cx * ncell[1] + cy) * ncell[2] + cz
 
 
 @njit(cache=True, inline="always")
@@ -120,7 +128,9 @@ def neighbour_cells(c, ncell, out):
     """Distinct cells among the 3^d around flat cell c (itself included) into out (>= 27
     entries); returns how many. Along an axis of 1 or 2 cells the images coincide and
     each cell is listed once; order: offsets -1, 0, 1 per axis, first axis slowest."""
-    cx, cy, cz = cell_triple(c, ncell)
+    cz = c % ncell[2]
+    cy = (c // ncell[2]) % ncell[1]
+    cx = c // (ncell[1] * ncell[2])
     n = 0
     for dx in range(-1, 2):
         if ncell[0] < 3 and (dx == -1 or (ncell[0] == 1 and dx == 1)):
@@ -134,12 +144,12 @@ def neighbour_cells(c, ncell, out):
                 if ncell[2] < 3 and (dz == -1 or (ncell[2] == 1 and dz == 1)):
                     continue
                 z = (cz + dz) % ncell[2]
-                out[n] = flat_index(x, y, z, ncell)
+                out[n] = (x * ncell[1] + y) * ncell[2] + z
                 n += 1
     return n
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def minimum_image(d, length):
     """Nearest periodic image of a coordinate difference |d| < length (both points in the box)."""
     half = 0.5 * length
@@ -185,41 +195,6 @@ def build_members(pos, box, ncell, members, count, cell_of, slot_of):
                       cell_of, slot_of):
             return False
     return True
-
-
-@njit(cache=True)
-def any_within(skip, c, x, y, z, pos, box, ncell, members, count, r2, scratch):
-    """Whether a member j != skip of the cells around flat cell c lies closer than sqrt(r2)
-    (nearest image) to (x, y, z).
-
-    Parameters
-    ----------
-    skip : particle index to ignore (-1: none).
-    c : flat cell of (x, y, z).
-    x, y, z : query point in the orthogonal box.
-    pos : (n, 3) positions of the members.
-    box, ncell : box lengths and cells per axis (cells at least sqrt(r2) wide).
-    members, count : the member table.
-    r2 : squared cutoff.
-    scratch : int64 array of >= 27 entries.
-
-    Returns
-    -------
-    bool
-    """
-    n = neighbour_cells(c, ncell, scratch)
-    for k in range(n):
-        cell = scratch[k]
-        for s in range(count[cell]):
-            j = members[cell, s]
-            if j == skip:
-                continue
-            dx = minimum_image(pos[j, 0] - x, box[0])
-            dy = minimum_image(pos[j, 1] - y, box[1])
-            dz = minimum_image(pos[j, 2] - z, box[2])
-            if dx * dx + dy * dy + dz * dz < r2:
-                return True
-    return False
 
 
 class MemberTable:
@@ -283,5 +258,5 @@ class SortedCells:
 __all__ = [
     "CELL_CAPACITY", "cell_coordinate", "flat_index", "cell_triple", "cell_index", "periodic_cell",
     "image_cell", "neighbour_cells", "minimum_image", "insert", "remove", "build_members",
-    "any_within", "MemberTable", "SortedCells",
+    "MemberTable", "SortedCells",
 ]

@@ -15,16 +15,28 @@ import math
 import numpy as np
 from numba import njit
 
-from randmedia.cell_list import (CELL_CAPACITY, MemberTable, any_within, build_members, cell_index,
-                                 insert, minimum_image, neighbour_cells, remove)
+from randmedia.cell_list import (CELL_CAPACITY, MemberTable, build_members, cell_index, insert,
+                                 minimum_image, neighbour_cells, remove)
 from randmedia.generate.hard_particles.settings import ChainError
 
 
 @njit(cache=True)
 def _overlaps(i, x, y, z, pos, box, ncell, members, count, diameter2, scratch):
-    """Whether (x, y, z), the trial position of particle i, overlaps another particle."""
-    return any_within(i, cell_index(x, y, z, box, ncell), x, y, z, pos, box, ncell, members,
-                      count, diameter2, scratch)
+    """Whether (x, y, z), the trial position of particle i (-1: none), lies closer than
+    sqrt(diameter2) to another particle (nearest image; the 3^d cells around it)."""
+    n = neighbour_cells(cell_index(x, y, z, box, ncell), ncell, scratch)
+    for k in range(n):
+        cell = scratch[k]
+        for s in range(count[cell]):
+            j = members[cell, s]
+            if j == i:
+                continue
+            dx = minimum_image(pos[j, 0] - x, box[0])
+            dy = minimum_image(pos[j, 1] - y, box[1])
+            dz = minimum_image(pos[j, 2] - z, box[2])
+            if dx * dx + dy * dy + dz * dz < diameter2:
+                return True
+    return False
 
 
 @njit(cache=True)
