@@ -79,6 +79,7 @@ from randmedia.generate import packing_lp, refuse_invalid
 from randmedia.generate.rsa import ball_volume
 from randmedia.checkpoint import array_digest, checkpoint_key
 from randmedia.periodic import Cell, pairs_within
+from randmedia.periodic import min_pair_distance as _min_distance
 from randmedia.resumable import ResumableRun
 
 #: densest packing fractions (hexagonal in 2D, fcc in 3D): no packing exceeds them
@@ -223,11 +224,6 @@ def reduce_cell(box: np.ndarray, delta: float = 0.75) -> np.ndarray:
 
 
 # --------------------------------------------------------------------------- one step
-
-
-def _min_distance(cell: Cell, positions: np.ndarray, cutoff: float) -> float:
-    _, _, _, distance = pairs_within(cell, positions, cutoff)
-    return float(distance.min()) if distance.size else np.inf
 
 
 def remove_overlaps(positions: np.ndarray, box: np.ndarray, diameter: float):
