@@ -13,6 +13,14 @@ from pathlib import Path
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
+
+# numba caches of kernels compiled in this process: one folder per package content, as in the
+# workflow (randmedia.workflow_sources.numba_cache_dir), never a stale callee after an edit
+NUMBA_CACHE_SET_HERE = "NUMBA_CACHE_DIR" not in os.environ
+if NUMBA_CACHE_SET_HERE:
+    from randmedia.workflow_sources import numba_cache_dir
+
+    os.environ["NUMBA_CACHE_DIR"] = str(numba_cache_dir(REPO / "src" / "randmedia", REPO / ".cache" / "numba"))
 SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
 WORKFLOW_PARTS = ("Snakefile", "workflow", "config", "profiles", "src")
 
