@@ -69,7 +69,7 @@ from numba import njit
 from randmedia.checkpoint import array_digest, checkpoint_key
 from randmedia.generate import refuse_invalid
 from randmedia.resumable import ResumableRun
-from randmedia.theory.sphere_caps import check_density, check_radius
+from randmedia.theory.sphere_caps import check_density, check_radius, first_cap_containing
 
 POTENTIALS = ("lj", "udd", "udd_flipped", "uddpar", "uddpar_cubed", "udc", "ucc")
 
@@ -207,14 +207,7 @@ def _axis_cap_counts(x, y, z, radius, cos_thresholds, out):
     for i in range(x.size):
         for k in range(3):
             value = (x[i] if k == 0 else (y[i] if k == 1 else z[i])) / radius
-            lo, hi = 0, n_caps  # first c with cos_thresholds[c] <= value
-            while lo < hi:
-                mid = (lo + hi) // 2
-                if cos_thresholds[mid] <= value:
-                    hi = mid
-                else:
-                    lo = mid + 1
-            hist[k, lo] += 1
+            hist[k, first_cap_containing(cos_thresholds, value)] += 1
     for k in range(3):
         running = 0
         for c in range(n_caps):
