@@ -5,6 +5,7 @@ from __future__ import annotations
 import json
 import os
 import shutil
+import signal
 import subprocess
 import sys
 from pathlib import Path
@@ -12,6 +13,14 @@ from pathlib import Path
 import pytest
 
 REPO = Path(__file__).resolve().parents[1]
+
+# numba caches of kernels compiled in this process: one folder per package content, as in the
+# workflow (randmedia.workflow_sources.numba_cache_dir), never a stale callee after an edit
+NUMBA_CACHE_SET_HERE = "NUMBA_CACHE_DIR" not in os.environ
+if NUMBA_CACHE_SET_HERE:
+    from randmedia.workflow_sources import numba_cache_dir
+
+    os.environ["NUMBA_CACHE_DIR"] = str(numba_cache_dir(REPO / "src" / "randmedia", REPO / ".cache" / "numba"))
 SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
 WORKFLOW_PARTS = ("Snakefile", "workflow", "config", "profiles", "src")
 
@@ -50,6 +59,37 @@ def assert_comparison_notes(table, notes, k_sigma: float) -> None:
     budget = (k_sigma * np.hypot(table["ours_sem"].fillna(0.0), notes["published_err"])
               + notes["rounding"] + notes["systematic"])
     np.testing.assert_allclose(budget, table["tolerance"], rtol=1e-12, atol=1e-15)
+
+
+def kill_and_resume(script: str, stage_marker: str, stages: int, tmp_path: Path):
+    """A construction killed (SIGKILL) and rerun, against one never interrupted.
+
+    ``script`` is Python run as ``python -c script CHECKPOINT OUTPUT.npy``: it logs to stdout,
+    checkpoints at every stage and saves its result to OUTPUT. The first run is killed once
+    ``stages`` lines containing ``stage_marker`` were printed and the checkpoint exists; the
+    rerun must resume from it, finish and remove it; a third run without a checkpoint gives
+    the uninterrupted result. Returns (stdout of the resumed run, its result, the
+    uninterrupted result)."""
+    import numpy as np
+
+    checkpoint, first, second = tmp_path / "c.npz", tmp_path / "a.npy", tmp_path / "b.npy"
+    command = [sys.executable, "-c", script, str(checkpoint)]
+    proc = subprocess.Popen(command + [str(first)], stdout=subprocess.PIPE, text=True)
+    stages_seen = 0
+    for line in proc.stdout:  # kill after a few checkpointed stages
+        stages_seen += stage_marker in line
+        if stages_seen >= stages and checkpoint.exists():
+            break
+    os.kill(proc.pid, signal.SIGKILL)
+    proc.wait()
+    assert checkpoint.exists() and not first.exists()
+    resumed = subprocess.run(command + [str(first)], capture_output=True, text=True)
+    assert resumed.returncode == 0, resumed.stderr[-2000:]
+    assert "resumed from" in resumed.stdout
+    assert not checkpoint.exists()  # removed on success
+    subprocess.run([sys.executable, "-c", script, str(tmp_path / "none.npz"), str(second)],
+                   check=True, capture_output=True)
+    return resumed.stdout, np.load(first), np.load(second)
 
 
 def copy_workflow(destination: Path) -> Path:

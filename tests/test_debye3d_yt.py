@@ -3,14 +3,11 @@ target, checkpoint/resume, checkpoints that name the dimension, input checks bef
 
 import functools
 import logging
-import os
-import signal
-import subprocess
-import sys
 
 import numpy as np
 import pytest
 
+from conftest import kill_and_resume
 from randmedia.checkpoint import array_digest, checkpoint_key
 from randmedia.describe.two_phase import s2_discrepancy, two_point_function
 from randmedia.generate.yeong_torquato import (AnnealingSchedule, _checkpoint_key, _Geometry,
@@ -159,28 +156,11 @@ np.save(sys.argv[2], result.image)
 
 def test_three_dimensional_killed_construction_resumes_to_the_same_image(tmp_path):
     """SIGKILL after a few checkpointed stages, then rerun: the same image as a run that
-    was never interrupted."""
-    checkpoint, first, second = tmp_path / "c.npz", tmp_path / "a.npy", tmp_path / "b.npy"
-    command = [sys.executable, "-c", RESUMABLE, str(checkpoint)]
-    proc = subprocess.Popen(command + [str(first)], stdout=subprocess.PIPE, text=True)
-    stages_seen = 0
-    for line in proc.stdout:  # kill after a few checkpointed stages
-        stages_seen += "; stage " in line
-        if stages_seen >= 3 and checkpoint.exists():
-            break
-    os.kill(proc.pid, signal.SIGKILL)
-    proc.wait()
-    assert checkpoint.exists() and not first.exists()
-    resumed = subprocess.run(command + [str(first)], capture_output=True, text=True)
-    assert resumed.returncode == 0, resumed.stderr[-2000:]
-    assert "resumed from" in resumed.stdout
-    assert "YT 24x24x24: " in resumed.stdout and "trials/s, ETA" in resumed.stdout  # progress
-    assert not checkpoint.exists()
-    subprocess.run([sys.executable, "-c", RESUMABLE, str(tmp_path / "none.npz"), str(second)],
-                   check=True, capture_output=True)
-    image = np.load(first)
-    assert image.shape == (24, 24, 24)
-    np.testing.assert_array_equal(image, np.load(second))
+    was never interrupted (tests/conftest.py: kill_and_resume)."""
+    stdout, resumed, whole = kill_and_resume(RESUMABLE, "; stage ", 3, tmp_path)
+    assert "YT 24x24x24: " in stdout and "trials/s, ETA" in stdout  # progress
+    assert resumed.shape == (24, 24, 24)
+    np.testing.assert_array_equal(resumed, whole)
 
 
 def _never_called(r):

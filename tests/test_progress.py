@@ -41,3 +41,23 @@ def test_every_describe_kind_reports_each_sample(caplog):
             describe(kind, "mrj", configs, first=0, log=log, **given)
         lines = [r.getMessage() for r in caplog.records if r.getMessage().startswith(f"mrj {kind}: ")]
         assert [line.split(",")[0] for line in lines] == [f"mrj {kind}: 1/2 samples", f"mrj {kind}: 2/2 samples"], kind
+
+
+def test_tj_eta_never_runs_past_max_lps(caplog):
+    """Near jamming phi barely grows: the extrapolation to phi = 0.64 would give an ETA of
+    10^5-10^6 s (the old defect); the total is capped at max_lps and the line says so."""
+    from randmedia.generate.jammed import _report
+
+    log = logging.getLogger("test_tj_eta")
+    progress = Progress(None, "TJ", log, unit="LPs", start=120)
+    phis = list(0.637 + 1e-9 * np.arange(120))  # growth 1e-9 per LP: 3e6 LPs to 0.64
+    history = {"phi": phis, "trace": [-1e-9] * 120, "rescale": [1.0] * 120, "rows": [9000] * 120,
+               "seconds": [8.0] * 120, "cpu": [8.0] * 120}
+    with caplog.at_level(logging.INFO, logger="test_tj_eta"):
+        _report(progress, history, 3, max_lps=500)
+    line = caplog.records[-1].getMessage()
+    assert line.startswith("TJ: 121/500 LPs,") and line.endswith("ETA = the bound max_lps = 500")
+    # far from jamming the estimate is kept: 0.6119 -> 0.64 at 1e-4 per LP is 281 + 50 LPs more
+    history["phi"] = list(0.60 + 1e-4 * np.arange(120))
+    _report(progress, history, 3, max_lps=500)
+    assert progress.total == 120 + 331

@@ -2,15 +2,11 @@
 
 import functools
 import hashlib
-import os
-import signal
-import subprocess
-import sys
 
 import numpy as np
 import pytest
 
-from conftest import SCHEMA
+from conftest import SCHEMA, kill_and_resume
 from randmedia.config import load_schema
 from randmedia.describe.two_phase import s2_discrepancy, two_point_function
 from randmedia.generate.yeong_torquato import (AnnealingSchedule, ConstructionError, _anneal,
@@ -234,22 +230,7 @@ np.save(sys.argv[2], result.image)
 
 
 def test_killed_construction_resumes_to_the_same_image(tmp_path):
-    checkpoint, first, second = tmp_path / "c.npz", tmp_path / "a.npy", tmp_path / "b.npy"
-    command = [sys.executable, "-c", RESUMABLE, str(checkpoint)]
-    proc = subprocess.Popen(command + [str(first)], stdout=subprocess.PIPE, text=True)
-    stages_seen = 0
-    for line in proc.stdout:  # kill after a few checkpointed stages
-        stages_seen += "stage " in line
-        if stages_seen >= 5 and checkpoint.exists():
-            break
-    os.kill(proc.pid, signal.SIGKILL)
-    proc.wait()
-    assert checkpoint.exists() and not first.exists()
-    resumed = subprocess.run(command + [str(first)], capture_output=True, text=True)
-    assert resumed.returncode == 0, resumed.stderr[-2000:]
-    assert "resumed from" in resumed.stdout
-    assert not checkpoint.exists()  # removed on success
-    # an uninterrupted run (no checkpoint file) gives the identical image
-    subprocess.run([sys.executable, "-c", RESUMABLE, str(tmp_path / "none.npz"), str(second)],
-                   check=True, capture_output=True)
-    np.testing.assert_array_equal(np.load(first), np.load(second))
+    """SIGKILL after a few checkpointed stages, then rerun: the same image as a run that
+    was never interrupted (tests/conftest.py: kill_and_resume)."""
+    _, resumed, whole = kill_and_resume(RESUMABLE, "stage ", 5, tmp_path)
+    np.testing.assert_array_equal(resumed, whole)

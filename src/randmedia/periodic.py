@@ -18,7 +18,9 @@ minimum width").
 :func:`pairs_within` lists every pair closer than r_c <= h_w with its
 separation vector, using a k-d tree on the points padded by their images
 within r_c of the cell (exact for triclinic cells, unlike a tree with a
-periodic ``boxsize``, which only knows orthogonal boxes).
+periodic ``boxsize``, which only knows orthogonal boxes). It is called from Python
+once per configuration or LP, where one vectorized tree query beats the numba cell
+lists of :mod:`randmedia.cell_list` (those serve the move-by-move kernels).
 """
 
 from __future__ import annotations
@@ -173,3 +175,10 @@ def pairs_within(cell: Cell, positions, cutoff: float):
     i, j, m = i[order], j[order], m[order]
     separation = points[m] - points[i]
     return i, j, separation, np.linalg.norm(separation, axis=1)
+
+
+def min_pair_distance(cell: Cell, positions, cutoff: float) -> float:
+    """Smallest nearest-image centre distance among the pairs closer than ``cutoff``
+    (:func:`pairs_within`, so ``cutoff <= cell.half_width``); inf if no pair is that close."""
+    _, _, _, distance = pairs_within(cell, positions, cutoff)
+    return float(distance.min()) if distance.size else np.inf

@@ -17,6 +17,13 @@ The closure is read from the source text with :mod:`ast`, never by importing:
 * every ``import`` statement counts, also those inside functions and under
   ``if`` (a lazily imported module still decides the results of the job).
 
+numba's on-disk cache (``cache=True``) has the opposite gap: it invalidates a compiled
+kernel only when *its own* file changes, so a kernel that calls a jitted function of
+another module keeps the callee's old machine code after that module is edited (checked with
+numba 0.68: tests/test_numba_cache.py). :func:`numba_cache_dir` therefore names one cache folder per content of the
+package; the workflow (``common.smk``) and the tests use it, so an edit anywhere in the
+package compiles afresh and never runs a stale kernel.
+
 Imports built at run time (``importlib.import_module(name)``, ``__import__``)
 are not seen; the package uses none for its own modules. A script or an
 imported ``randmedia`` module that does not exist raises
@@ -26,11 +33,12 @@ imported ``randmedia`` module that does not exist raises
 from __future__ import annotations
 
 import ast
+import hashlib
 import os
 from functools import lru_cache
 from pathlib import Path
 
-__all__ = ["SourceError", "script_sources"]
+__all__ = ["SourceError", "numba_cache_dir", "package_digest", "script_sources"]
 
 
 class SourceError(Exception):
@@ -144,3 +152,20 @@ def script_sources(script, package_dir) -> list[Path]:
                         found.add(target)
                         queue.append((target, *_dotted_name(package_dir, target)))
     return sorted(found, key=str)
+
+
+def package_digest(package_dir) -> str:
+    """SHA-256 of every ``.py`` file of the package (relative paths and bytes, sorted by path)."""
+    package_dir = _normalized(package_dir)
+    digest = hashlib.sha256()
+    for path in sorted(package_dir.rglob("*.py")):
+        digest.update(str(path.relative_to(package_dir)).encode() + b"\0")
+        digest.update(path.read_bytes() + b"\0")
+    return digest.hexdigest()
+
+
+def numba_cache_dir(package_dir, root) -> Path:
+    """The numba cache folder of this content of the package: ``root/<16 hex digits of
+    package_digest>`` (module docstring: numba does not track calls across modules). Folders
+    of earlier contents stay beside it until ``root`` is deleted (safe at any time)."""
+    return Path(root).resolve() / package_digest(package_dir)[:16]

@@ -3,16 +3,18 @@ import os
 import re
 from pathlib import Path
 
-from randmedia.workflow_sources import SourceError, script_sources as _script_sources
-
-# Parallel jobs must not fail on HDF5 file locks (our writes are atomic
-# renames), and share one numba cache per working directory. numba writes its
-# cache index and data files to a temporary name and renames them, so
-# concurrent jobs compiling the same kernel do not corrupt the cache.
-os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
-os.environ.setdefault("NUMBA_CACHE_DIR", str(Path(".cache/numba").resolve()))
+from randmedia.workflow_sources import SourceError, numba_cache_dir as _numba_cache_dir, script_sources as _script_sources
 
 PACKAGE_DIR = Path(workflow.basedir) / "src" / "randmedia"
+
+# Parallel jobs must not fail on HDF5 file locks (our writes are atomic
+# renames), and share one numba cache per working directory and package content
+# (numba_cache_dir: numba alone would keep a kernel's stale callees from other
+# modules after an edit). numba writes its cache index and data files to a
+# temporary name and renames them, so concurrent jobs compiling the same kernel
+# do not corrupt the cache.
+os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
+os.environ.setdefault("NUMBA_CACHE_DIR", str(_numba_cache_dir(PACKAGE_DIR, ".cache/numba")))
 
 #: where this run's outputs go (config key ``results_dir``): results/ for the paper config,
 #: results/quick/ for config/quick.yaml, so that a quick run never replaces (deletes) hours of

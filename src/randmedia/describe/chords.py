@@ -48,19 +48,25 @@ from randmedia.stats import standard_error
 
 
 @njit(cache=True)
-def _inside(field, threshold, x, y):
-    """Bilinear interpolation of ``field`` (values at pixel centres j+1/2, i+1/2) > threshold."""
-    ny, nx = field.shape
-    fx = x - 0.5
-    fy = y - 0.5
+def bilinear_stencil(fx, fy, ny, nx):
+    """The four periodic grid nodes around the point (fx, fy) in node units (node (i, j) at
+    (j, i)) and its fractions past the lower ones: (i0, i1, j0, j1, tx, ty); the bilinear
+    weights are (1 - tx)(1 - ty), tx (1 - ty), (1 - tx) ty, tx ty. Used to read a field at
+    a point (:func:`_inside`) and to deposit onto the grid (``surface._deposit``)."""
     j0 = int(math.floor(fx))
     i0 = int(math.floor(fy))
     tx = fx - j0
     ty = fy - i0
     j1 = (j0 + 1) % nx
     i1 = (i0 + 1) % ny
-    j0 %= nx
-    i0 %= ny
+    return i0 % ny, i1, j0 % nx, j1, tx, ty
+
+
+@njit(cache=True)
+def _inside(field, threshold, x, y):
+    """Bilinear interpolation of ``field`` (values at pixel centres j+1/2, i+1/2) > threshold."""
+    ny, nx = field.shape
+    i0, i1, j0, j1, tx, ty = bilinear_stencil(x - 0.5, y - 0.5, ny, nx)
     value = ((1 - ty) * ((1 - tx) * field[i0, j0] + tx * field[i0, j1])
              + ty * ((1 - tx) * field[i1, j0] + tx * field[i1, j1]))
     return value > threshold

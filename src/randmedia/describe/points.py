@@ -28,9 +28,13 @@ Klatt & Torquato, PRE 94, 022152 (2016), Secs. II B, V and VI:
   R <= h_w, so a ball contains each centre at most once.
 
 Neighbour search: a periodic cell list in fractional coordinates (any
-triclinic cell), numba kernels. For the nearest centre the search grows in
-cell shells until the distance found is within the radius the shell
-guarantees, so it is exact without a cutoff.
+triclinic cell; :class:`randmedia.cell_list.SortedCells` and its image-cell
+walk), numba kernels. For the nearest centre the search grows in cell shells
+until the distance found is within the radius the shell guarantees, so it is
+exact without a cutoff; window counts visit every cell of a fixed range that a
+lower bound of its distance does not rule out. The two walks share the query
+location, the image cells and the distance; they differ in which cells they
+visit (growing shells with a stopping rule vs. one culled range), so they stay two.
 """
 
 from __future__ import annotations
@@ -40,73 +44,36 @@ import math
 import numpy as np
 from numba import njit
 
+from randmedia.cell_list import SortedCells, cell_coordinate, image_cell, periodic_cell
 from randmedia.periodic import Cell, padded_images
 from randmedia.stats import standard_error
 
 
-# --------------------------------------------------------------------------- cell list
+# --------------------------------------------------------------------------- cell walks
 
-
-class CellList:
-    """Centres sorted into n_c[0] x n_c[1] x n_c[2] fractional cells of a periodic cell."""
-
-    def __init__(self, positions, box, target_per_cell: float = 2.0):
-        self.cell = Cell(box)
-        positions = np.asarray(positions, dtype=float)
-        if self.cell.dim != 3 or positions.ndim != 2 or positions.shape[1] != 3:
-            raise ValueError("CellList needs 3D positions (n, 3) and a 3x3 box")
-        if len(positions) == 0:
-            raise ValueError("no centres given")
-        frac = self.cell.fractional(positions)
-        frac -= np.floor(frac)
-        frac[frac >= 1.0] = 0.0
-        faces = self.cell.face_distances
-        spacing = (self.cell.volume * target_per_cell / len(positions)) ** (1.0 / 3.0)
-        self.n_cells = np.maximum(1, np.floor(faces / spacing)).astype(np.int64)
-        index = np.floor(frac * self.n_cells).astype(np.int64)
-        index = np.minimum(index, self.n_cells - 1)
-        flat = (index[:, 0] * self.n_cells[1] + index[:, 1]) * self.n_cells[2] + index[:, 2]
-        order = np.argsort(flat, kind="stable")
-        self.frac = np.ascontiguousarray(frac[order])
-        #: Cartesian coordinates of the wrapped centres, in cell order
-        self.cart = np.ascontiguousarray(self.frac @ self.cell.box.T)
-        counts = np.bincount(flat, minlength=int(np.prod(self.n_cells)))
-        self.start = np.concatenate(([0], np.cumsum(counts))).astype(np.int64)
-        self.box = np.ascontiguousarray(self.cell.box)
-        #: Cartesian width of one fractional cell across each pair of faces
-        self.cell_width = faces / self.n_cells
-
-    def query_fractional(self, points) -> np.ndarray:
-        frac = self.cell.fractional(np.asarray(points, dtype=float))
-        frac -= np.floor(frac)
-        frac[frac >= 1.0] = 0.0
-        return np.ascontiguousarray(frac)
-
-
-@njit(cache=True)
-def _cell_of(f, n_cells):
-    c0 = min(int(f[0] * n_cells[0]), n_cells[0] - 1)
-    c1 = min(int(f[1] * n_cells[1]), n_cells[1] - 1)
-    c2 = min(int(f[2] * n_cells[2]), n_cells[2] - 1)
-    return c0, c1, c2
+#: the centres sorted into fractional cells (:class:`randmedia.cell_list.SortedCells`)
+CellList = SortedCells
 
 
 @njit(cache=True, inline="always")
-def _wrap_index(a, n):
-    """(periodic shift, wrapped index) of the unwrapped cell index a along an axis of n cells."""
-    shift = math.floor(a / n)
-    return shift, a - shift * n
+def _locate(q, box, n_cells, qc):
+    """Cartesian point qc of the fractional query q, its cell (c0, c1, c2) and its position
+    (t0, t1, t2) inside that cell, in cell widths along each axis."""
+    for i in range(3):
+        qc[i] = box[i, 0] * q[0] + box[i, 1] * q[1] + box[i, 2] * q[2]
+    c0 = cell_coordinate(q[0], n_cells[0])
+    c1 = cell_coordinate(q[1], n_cells[1])
+    c2 = cell_coordinate(q[2], n_cells[2])
+    return c0, c1, c2, q[0] * n_cells[0] - c0, q[1] * n_cells[1] - c1, q[2] * n_cells[2] - c2
 
 
 @njit(cache=True, inline="always")
-def _shifted_cell(box, s0, s1, s2, w0, w1, w2, n_cells, qc):
-    """Flat index of cell (w0, w1, w2) and the Cartesian offset (lattice shift s minus the
-    query qc) that turns its stored centres into displacements from the query."""
-    flat = (w0 * n_cells[1] + w1) * n_cells[2] + w2
-    sh0 = box[0, 0] * s0 + box[0, 1] * s1 + box[0, 2] * s2 - qc[0]
-    sh1 = box[1, 0] * s0 + box[1, 1] * s1 + box[1, 2] * s2 - qc[1]
-    sh2 = box[2, 0] * s0 + box[2, 1] * s1 + box[2, 2] * s2 - qc[2]
-    return flat, sh0, sh1, sh2
+def _distance2(cart, p, sh0, sh1, sh2):
+    """Squared length of the displacement cart[p] + sh of stored centre p from the query."""
+    x = cart[p, 0] + sh0
+    y = cart[p, 1] + sh1
+    z = cart[p, 2] + sh2
+    return x * x + y * y + z * z
 
 
 @njit(cache=True)
@@ -114,42 +81,32 @@ def _shell_min(qc, cart, start, n_cells, box, c0, c1, c2, s, best):
     """Minimum squared distance from the point qc (Cartesian) to centres in the cells at
     Chebyshev distance s from cell (c0, c1, c2); periodic images by whole-cell shifts."""
     for d0 in range(-s, s + 1):
-        a0 = c0 + d0
-        s0, w0 = _wrap_index(a0, n_cells[0])
+        s0, w0 = periodic_cell(c0 + d0, n_cells[0])
         for d1 in range(-s, s + 1):
-            a1 = c1 + d1
-            s1, w1 = _wrap_index(a1, n_cells[1])
+            s1, w1 = periodic_cell(c1 + d1, n_cells[1])
             for d2 in range(-s, s + 1):
                 if max(abs(d0), abs(d1), abs(d2)) != s:
                     continue
-                a2 = c2 + d2
-                s2, w2 = _wrap_index(a2, n_cells[2])
-                flat, sh0, sh1, sh2 = _shifted_cell(box, s0, s1, s2, w0, w1, w2, n_cells, qc)
+                s2, w2 = periodic_cell(c2 + d2, n_cells[2])
+                flat, sh0, sh1, sh2 = image_cell(box, s0, s1, s2, w0, w1, w2, n_cells, qc)
                 for p in range(start[flat], start[flat + 1]):
-                    x = cart[p, 0] + sh0
-                    y = cart[p, 1] + sh1
-                    z = cart[p, 2] + sh2
-                    d2 = x * x + y * y + z * z
-                    if d2 < best:
-                        best = d2
+                    r2 = _distance2(cart, p, sh0, sh1, sh2)
+                    if r2 < best:
+                        best = r2
     return best
 
 
 @njit(cache=True)
 def _nearest(queries, cart, start, n_cells, box, widths, out):
+    """out[m] = distance from query m to its nearest centre: shells of cells around the
+    query cell, grown until the best distance is within the radius they guarantee."""
     qc = np.empty(3)
+    min_width = min(widths[0], min(widths[1], widths[2]))
     for m in range(queries.shape[0]):
-        q = queries[m]
-        for i in range(3):
-            qc[i] = box[i, 0] * q[0] + box[i, 1] * q[1] + box[i, 2] * q[2]
-        c0, c1, c2 = _cell_of(q, n_cells)
-        # distance (in cell widths) from q to the faces of its own cell, per axis
-        t0 = q[0] * n_cells[0] - c0
-        t1 = q[1] * n_cells[1] - c1
-        t2 = q[2] * n_cells[2] - c2
+        c0, c1, c2, t0, t1, t2 = _locate(queries[m], box, n_cells, qc)
+        # distance from the query to the faces of its own cell
         margin = min(min(t0, 1.0 - t0) * widths[0], min(t1, 1.0 - t1) * widths[1],
                      min(t2, 1.0 - t2) * widths[2])
-        min_width = min(widths[0], min(widths[1], widths[2]))
         best = np.inf
         s = 0
         while True:
@@ -302,13 +259,7 @@ def _window_counts(queries, cart, start, n_cells, box, widths, lam_min, radii2, 
             continue
         r_max2 = radii2[n_r - 1]
         r_max = math.sqrt(r_max2)
-        q = queries[m]
-        for i in range(3):
-            qc[i] = box[i, 0] * q[0] + box[i, 1] * q[1] + box[i, 2] * q[2]
-        c0, c1, c2 = _cell_of(q, n_cells)
-        t0 = q[0] * n_cells[0] - c0
-        t1 = q[1] * n_cells[1] - c1
-        t2 = q[2] * n_cells[2] - c2
+        c0, c1, c2, t0, t1, t2 = _locate(queries[m], box, n_cells, qc)
         e0 = int(math.ceil(r_max / widths[0]))
         e1 = int(math.ceil(r_max / widths[1]))
         e2 = int(math.ceil(r_max / widths[2]))
@@ -318,31 +269,25 @@ def _window_counts(queries, cart, start, n_cells, box, widths, lam_min, radii2, 
             b0 = lam_min * g0 * g0
             if b0 >= r_max2:
                 continue
-            a0 = c0 + d0
-            s0, w0 = _wrap_index(a0, n_cells[0])
+            s0, w0 = periodic_cell(c0 + d0, n_cells[0])
             for d1 in range(-e1, e1 + 1):
                 g1 = _gap(d1, t1) / n_cells[1]
                 b1 = b0 + lam_min * g1 * g1
                 if b1 >= r_max2:
                     continue
-                a1 = c1 + d1
-                s1, w1 = _wrap_index(a1, n_cells[1])
+                s1, w1 = periodic_cell(c1 + d1, n_cells[1])
                 for d2 in range(-e2, e2 + 1):
                     g2 = _gap(d2, t2) / n_cells[2]
                     if b1 + lam_min * g2 * g2 >= r_max2:
                         continue
-                    a2 = c2 + d2
-                    s2, w2 = _wrap_index(a2, n_cells[2])
-                    flat, sh0, sh1, sh2 = _shifted_cell(box, s0, s1, s2, w0, w1, w2, n_cells, qc)
+                    s2, w2 = periodic_cell(c2 + d2, n_cells[2])
+                    flat, sh0, sh1, sh2 = image_cell(box, s0, s1, s2, w0, w1, w2, n_cells, qc)
                     for p in range(start[flat], start[flat + 1]):
-                        x = cart[p, 0] + sh0
-                        y = cart[p, 1] + sh1
-                        z = cart[p, 2] + sh2
-                        d2 = x * x + y * y + z * z
-                        if d2 < r_max2:
-                            # first radius index i with d2 < radii2[i] (radii ascending)
-                            i = lut[int(d2 * lut_scale)]
-                            while radii2[i] <= d2:
+                        r2 = _distance2(cart, p, sh0, sh1, sh2)
+                        if r2 < r_max2:
+                            # first radius index i with r2 < radii2[i] (radii ascending)
+                            i = lut[int(r2 * lut_scale)]
+                            while radii2[i] <= r2:
                                 i += 1
                             hist[i] += 1
         running = 0

@@ -50,6 +50,7 @@ from numba import njit, prange
 
 from randmedia.io import VariableSpec
 from randmedia.theory.sphere_caps import (cap_area, cap_grid, cap_intersection_fraction,  # noqa: F401
+                                          first_cap_containing,
                                           check_radius, cos_thresholds)
 
 #: what a reader of a cap-variance descriptor file requires
@@ -89,14 +90,7 @@ def _cap_counts(points, n_points, centres, radius, thresholds, out):
         cx, cy, cz = centres[f, m, 0], centres[f, m, 1], centres[f, m, 2]
         for i in range(n_points[f]):
             value = (points[f, i, 0] * cx + points[f, i, 1] * cy + points[f, i, 2] * cz) / radius
-            lo, hi = 0, n_caps  # first cap whose threshold the point passes
-            while lo < hi:
-                mid = (lo + hi) // 2
-                if thresholds[mid] <= value:
-                    hi = mid
-                else:
-                    lo = mid + 1
-            hist[lo] += 1
+            hist[first_cap_containing(thresholds, value)] += 1
         running = 0
         for c in range(n_caps):
             running += hist[c]

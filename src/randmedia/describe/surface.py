@@ -58,7 +58,7 @@ import xarray as xr
 from numba import njit
 from scipy.optimize import brentq
 
-from randmedia.describe.chords import LevelSet
+from randmedia.describe.chords import LevelSet, bilinear_stencil
 from randmedia.describe.percolation import wrapping_directions
 from randmedia.describe.two_phase import RadialBinning
 from randmedia.io import VariableSpec
@@ -175,16 +175,8 @@ def _deposit(segments, spacing, grid):
         weight = length / pieces
         for p in range(pieces):
             t = (p + 0.5) / pieces
-            fx = (xa + t * dx) / spacing - 0.5
-            fy = (ya + t * dy) / spacing - 0.5
-            j0 = int(math.floor(fx))
-            i0 = int(math.floor(fy))
-            tx = fx - j0
-            ty = fy - i0
-            j1 = (j0 + 1) % nx
-            i1 = (i0 + 1) % ny
-            j0 %= nx
-            i0 %= ny
+            i0, i1, j0, j1, tx, ty = bilinear_stencil((xa + t * dx) / spacing - 0.5,
+                                                      (ya + t * dy) / spacing - 0.5, ny, nx)
             grid[i0, j0] += weight * (1 - tx) * (1 - ty)
             grid[i0, j1] += weight * tx * (1 - ty)
             grid[i1, j0] += weight * (1 - tx) * ty

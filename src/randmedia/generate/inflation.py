@@ -48,7 +48,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from randmedia.generate import packing_lp, refuse_invalid
-from randmedia.periodic import Cell, pairs_within
+from randmedia.periodic import Cell, min_pair_distance, pairs_within
 
 #: keys of the per-LP record of :func:`inflation_step`
 STEP_RECORD_KEYS = ("inflation", "realized", "rows", "at_bound", "backbone_at_bound",
@@ -90,11 +90,6 @@ class InflationParameters:
 def cutoff_for(bound: float, dim: int, diameter: float = 1.0) -> float:
     """Pairs beyond D (1 + 4 sqrt(d) l) cannot touch after a step (module docstring)."""
     return diameter * (1.0 + 4.0 * math.sqrt(dim) * bound)
-
-
-def _min_distance(cell: Cell, positions: np.ndarray, cutoff: float) -> float:
-    _, _, _, distance = pairs_within(cell, positions, cutoff)
-    return float(distance.min()) if distance.size else np.inf
 
 
 def inflation_step(positions: np.ndarray, box: np.ndarray, bound: float, *,
@@ -141,7 +136,7 @@ def inflation_step(positions: np.ndarray, box: np.ndarray, bound: float, *,
     bound_dual = np.abs(solution.col_dual[:-1].reshape(n, dim)) if solution.col_dual is not None \
         else np.zeros_like(moves)
     moved = cell.wrap(positions + moves)
-    closest = _min_distance(cell, moved, cutoff)
+    closest = min_pair_distance(cell, moved, cutoff)
     factor = diameter / closest
     new_positions, new_box = moved * factor, box * factor
     record = {

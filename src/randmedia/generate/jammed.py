@@ -61,7 +61,8 @@ smallest non-contact gaps stay ~1e-6 D or larger.
 Start: random sequential addition at ``initial_phi``
 (:func:`randmedia.generate.rsa.random_sequential_addition`). The construction is
 deterministic given the start, so a run resumed from a checkpoint (saved at an LP
-boundary) reproduces the uninterrupted run bit for bit.
+boundary by :class:`randmedia.resumable.ResumableRun`) reproduces the uninterrupted run bit
+for bit.
 """
 
 from __future__ import annotations
@@ -71,14 +72,15 @@ import math
 import os
 import time
 from dataclasses import asdict, dataclass, field, replace
-from pathlib import Path
 
 import numpy as np
 
 from randmedia.generate import packing_lp, refuse_invalid
 from randmedia.generate.rsa import ball_volume
-from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
+from randmedia.checkpoint import array_digest, checkpoint_key
 from randmedia.periodic import Cell, pairs_within
+from randmedia.periodic import min_pair_distance as _min_distance
+from randmedia.resumable import ResumableRun
 
 #: densest packing fractions (hexagonal in 2D, fcc in 3D): no packing exceeds them
 MAX_PACKING_FRACTION = {2: math.pi / (2 * math.sqrt(3)), 3: math.pi / math.sqrt(18)}
@@ -224,11 +226,6 @@ def reduce_cell(box: np.ndarray, delta: float = 0.75) -> np.ndarray:
 # --------------------------------------------------------------------------- one step
 
 
-def _min_distance(cell: Cell, positions: np.ndarray, cutoff: float) -> float:
-    _, _, _, distance = pairs_within(cell, positions, cutoff)
-    return float(distance.min()) if distance.size else np.inf
-
-
 def remove_overlaps(positions: np.ndarray, box: np.ndarray, diameter: float):
     """Rescale positions and cell by D / (smallest centre distance) if that is < D.
 
@@ -348,13 +345,36 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         diameter: float = 1.0, checkpoint: str | os.PathLike | None = None,
         checkpoint_seconds: float = 60.0, log: logging.Logger | None = None,
         log_seconds: float = 15.0, threads: int = 1) -> JammedPacking:
-    """Compress a non-overlapping packing to a strictly jammed one by TJ steps.
+    """Compress a non-overlapping packing to a strictly jammed one by TJ steps (module docstring).
 
-    ``checkpoint``: file the state is saved to (at LP boundaries, at most every
-    ``checkpoint_seconds``) and resumed from if it exists and belongs to the same
-    start and parameters; removed on success. Progress (LPs/s, phi, Tr epsilon,
-    ETA) goes to ``log`` every ``log_seconds``. Raises :class:`ConstructionError`
-    if not converged after ``params.max_lps`` LPs.
+    Parameters
+    ----------
+    positions : array (n, d)
+        Start packing (no overlaps), d = 2 or 3.
+    box : array (d, d)
+        Its periodic cell, lattice vectors as columns.
+    params : TJParameters
+        Constants of the SLP.
+    diameter : float
+        D.
+    checkpoint : path, optional
+        File the state is saved to (at LP boundaries, at most every ``checkpoint_seconds``)
+        and resumed from if it exists and belongs to the same start and parameters; removed
+        on success. Saving, resuming and progress are :class:`randmedia.resumable.ResumableRun`'s.
+    log, log_seconds
+        Progress (LPs, rate, phi, Tr epsilon, rescale, rows, ETA) at most every ``log_seconds``.
+    threads : int
+        HiGHS threads.
+
+    Returns
+    -------
+    JammedPacking
+        The packing and the per-LP record; the same whether or not the run was resumed.
+
+    Raises
+    ------
+    ConstructionError
+        If not converged after ``params.max_lps`` LPs.
     """
     log = log or logging.getLogger(__name__)
     positions = np.array(positions, dtype=float)
@@ -365,32 +385,40 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     if closest < diameter * (1 - 1e-12):
         raise ValueError(f"the start packing overlaps: closest centre distance {closest:.6g} < D = "
                          f"{diameter:g}")
-    key = _checkpoint_key(positions, box, params, diameter)
-    history = {name: [] for name in _HISTORY_KEYS + ("trust_next",)}
-    elapsed_before = cpu_before = 0.0
-    state = _load_checkpoint(checkpoint, key, log) if checkpoint is not None else None
+    run = ResumableRun(checkpoint, _checkpoint_key(positions, box, params, diameter), log,
+                       checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
+    state = run.resume(_restore)
     if state is not None:  # saved at an LP boundary, exactly as the step left it
-        positions, box, history, elapsed_before, cpu_before = state
+        positions, box, history = state
+        log.info("resumed from %s after %d LPs (phi = %.6f)", checkpoint, len(history["phi"]),
+                 history["phi"][-1] if history["phi"] else float("nan"))
     else:
+        history = {name: [] for name in _HISTORY_KEYS + ("trust_next",)}
         box = reduce_cell(box)
         positions = Cell(box).wrap(positions)
-    started = last_save = last_log = time.perf_counter()
-    cpu_started = time.process_time()
-    window_start = (len(history["phi"]), started)
     trust = history["trust_next"][-1] if history["trust_next"] else 1.0
-    while True:
+    jammed = False  # the LP with the full bounds cannot lower the volume
+    progress = run.progress(None, "TJ", "LPs", done=len(history["phi"]))
+
+    def finished() -> bool:
+        if jammed:
+            return True
         accepted = [phi for phi, ok in zip(history["phi"], history["accepted"]) if ok]
         if len(accepted) >= 3 and abs(accepted[-1] - accepted[-3]) <= params.tolerance * accepted[-1]:
-            break
+            return True
         if trust < MIN_TRUST:
             log.info("trust factor below %g: no LP step raises phi any more", MIN_TRUST)
-            break
+            return True
         if len(history["phi"]) >= params.max_lps:
             change = (accepted[-1] - accepted[-3]) / accepted[-1] if len(accepted) >= 3 else np.nan
             raise ConstructionError(
                 f"TJ did not converge within max_lps = {params.max_lps} LPs (phi = "
                 f"{packing_fraction(positions, box, diameter):.6f}, last relative change "
                 f"{change:.3g} > tolerance {params.tolerance:g})")
+        return False
+
+    def step() -> None:
+        nonlocal positions, box, trust, jammed
         phi_old = packing_fraction(positions, box, diameter)
         new_positions, new_box, record = tj_step(positions, box, params, diameter, threads, trust)
         phi_new = packing_fraction(new_positions, new_box, diameter)
@@ -401,7 +429,8 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
                                       "trust_next": trust}[name])
             log.info("the LP cannot lower the volume (Tr epsilon = %.3g): jammed",
                      record["trace"])
-            break
+            jammed = True
+            return
         ok, next_trust = _next_trust(trust, -record["trace"], math.log(phi_new / phi_old),
                                      params.tolerance)
         if ok:
@@ -411,41 +440,36 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         trust = next_trust
         for name in _HISTORY_KEYS + ("trust_next",):
             history[name].append(record[name])
-        now = time.perf_counter()
-        if now - last_log >= log_seconds:
-            _log_progress(log, history, window_start, now, dim)
-            window_start, last_log = (len(history["phi"]), now), now
-        if checkpoint is not None and now - last_save >= checkpoint_seconds:
-            _save_checkpoint(checkpoint, key, positions, box, history,
-                             elapsed_before + now - started,
-                             cpu_before + time.process_time() - cpu_started)
-            last_save = now
-    seconds = elapsed_before + time.perf_counter() - started
-    cpu_seconds = cpu_before + time.process_time() - cpu_started
+        _report(progress, history, dim, params.max_lps)
+
+    run.loop(step, finished, lambda: _checkpoint_arrays(positions, box, history))
     log.info("converged after %d LPs in %.1f s (%.1f s CPU): phi = %.6f", len(history["phi"]),
-             seconds, cpu_seconds, history["phi"][-1])
-    if checkpoint is not None:
-        Path(checkpoint).unlink(missing_ok=True)
+             run.seconds, run.cpu_seconds, history["phi"][-1])
+    run.finish()
     return JammedPacking(positions=positions, box=box, diameter=diameter, n_lp=len(history["phi"]),
-                         seconds=seconds, cpu_seconds=cpu_seconds, lp_seconds=float(np.sum(history["seconds"])),
+                         seconds=run.seconds, cpu_seconds=run.cpu_seconds,
+                         lp_seconds=float(np.sum(history["seconds"])),
                          history={k: np.asarray(v) for k, v in history.items()}, params=params)
 
 
-def _log_progress(log, history, window_start, now, dim) -> None:
-    count, since = window_start
+def _report(progress, history, dim, max_lps: int) -> None:
+    """Progress line after an LP. The total (hence the ETA) is an estimate, never beyond
+    ``max_lps``, where the run stops in any case: the LPs to compress at the current per-LP
+    growth of phi up to a typical jamming density (0.64 in 3D, 0.84 in 2D), plus ~50 LPs of
+    final convergence. Near jamming (the MRJ polish ends at phi ~ 0.637 with growth ~0) the
+    extrapolation diverges, so there the total is ``max_lps`` and the ETA an upper bound."""
     done = len(history["phi"])
-    rate = (done - count) / max(now - since, 1e-9)
     phi = history["phi"][-1]
-    # rough ETA: LPs to compress at the current per-LP growth of phi up to a typical
-    # jamming density (0.64 in 3D, 0.84 in 2D), plus ~50 LPs of final convergence
     recent = np.asarray(history["phi"][-20:])
     growth = (recent[-1] - recent[0]) / max(len(recent) - 1, 1)
     target = 0.64 if dim == 3 else 0.84
     remaining = 50 + (max(target - phi, 0.0) / growth if growth > 0 else 0.0)
-    log.info("LP %d: phi = %.6f, Tr eps = %.3g, rescale - 1 = %.2g, %d rows, %.2f LPs/s "
-             "(last LP solve %.2f s, %.2f s CPU), ETA ~ %.0f s", done, phi, history["trace"][-1],
-             history["rescale"][-1] - 1, history["rows"][-1], rate, history["seconds"][-1],
-             history["cpu"][-1], remaining / max(rate, 1e-9))
+    total = min(max_lps, done + int(min(round(remaining), max_lps)))
+    progress.step(1, total=total, detail=lambda: (
+        f"phi = {phi:.6f}, Tr eps = {history['trace'][-1]:.3g}, rescale - 1 = "
+        f"{history['rescale'][-1] - 1:.2g}, {history['rows'][-1]} rows (last LP solve "
+        f"{history['seconds'][-1]:.2f} s, {history['cpu'][-1]:.2f} s CPU)"
+        + (f"; ETA = the bound max_lps = {max_lps}" if total == max_lps else "")))
 
 
 # --------------------------------------------------------------------------- checkpoints
@@ -456,24 +480,15 @@ def _checkpoint_key(positions, box, params, diameter) -> str:
     return checkpoint_key(params=asdict(params), diameter=diameter, start=array_digest(positions, box))
 
 
-def _save_checkpoint(path, key, positions, box, history, elapsed, cpu) -> None:
-    save_checkpoint(path, key, {"positions": positions, "box": box, "elapsed": elapsed, "cpu": cpu,
-                                **{f"history_{k}": np.asarray(v) for k, v in history.items()}})
+def _checkpoint_arrays(positions, box, history) -> dict:
+    """What a checkpoint holds (the driver adds its clocks ``elapsed`` and ``cpu``)."""
+    return {"positions": positions, "box": box, **{f"history_{k}": np.asarray(v) for k, v in history.items()}}
 
 
-def _load_checkpoint(path, key, log):
-    data = load_checkpoint(path, key, log)
-    if data is None:
-        return None
-    try:
-        history = {k: data[f"history_{k}"].tolist() for k in _HISTORY_KEYS + ("trust_next",)}
-        state = (data["positions"], data["box"], history, float(data["elapsed"]), float(data["cpu"]))
-    except KeyError as exc:
-        log.warning("%s lacks %s; starting afresh", path, exc)
-        return None
-    log.info("resumed from %s after %d LPs (phi = %.6f)", path, len(state[2]["phi"]),
-             state[2]["phi"][-1] if state[2]["phi"] else float("nan"))
-    return state
+def _restore(data: dict):
+    """(positions, box, history) from a checkpoint's arrays (KeyError if one is missing)."""
+    history = {k: data[f"history_{k}"].tolist() for k in _HISTORY_KEYS + ("trust_next",)}
+    return data["positions"], data["box"], history
 
 
 # --------------------------------------------------------------------------- output file

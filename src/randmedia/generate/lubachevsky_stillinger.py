@@ -36,7 +36,9 @@ collision counters invalidate predictions whose partner has collided since (the
 standard single-event scheme, e.g. Rapaport, *The Art of Molecular Dynamics
 Simulation*, ch. 14). Cells have a side of at least the largest diameter the
 spheres can reach (the densest packing), so every collision partner lies in one of
-the 3^d cells around a sphere. The kernels are numba-compiled, d-generic, and
+the 3^d cells around a sphere. The cells are doubly linked lists of their own, not the
+member table of :mod:`randmedia.cell_list`: a sphere's cell changes only at its
+crossing events (tracked, not recomputed from a position that sits on the face). The kernels are numba-compiled, d-generic, and
 deterministic: the same start and velocities give the same trajectory.
 """
 
@@ -469,12 +471,11 @@ class GrowingSpheres:
 
     def min_distance(self) -> float:
         """Smallest centre distance (nearest images; all pairs within 1.5 sigma)."""
-        from randmedia.periodic import Cell, pairs_within
+        from randmedia.periodic import Cell, min_pair_distance
 
         cell = Cell(np.eye(self.dim) * self.side)
-        cutoff = min(1.5 * max(self.sigma, 1e-9), cell.half_width)
-        _, _, _, distance = pairs_within(cell, self.pos % self.side, cutoff)
-        return float(distance.min()) if distance.size else np.inf
+        return min_pair_distance(cell, self.pos % self.side,
+                                 min(1.5 * max(self.sigma, 1e-9), cell.half_width))
 
 
 def compress(rng: np.random.Generator, n: int, dim: int = 3,

@@ -26,24 +26,25 @@ spend hundreds of steps in a slow creep near phi ~ 0.62-0.63 whose per-step gain
 by the LP optimum itself, not by the step bounds (measured: README).
 
 The whole construction is deterministic given the seed; a checkpoint (at the end of the
-compression and at LP boundaries) resumes it after a kill with the same result.
+compression and at LP boundaries; :class:`randmedia.resumable.ResumableRun`) resumes it
+after a kill with the same result.
 """
 
 from __future__ import annotations
 
 import logging
 import os
-import time
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
 import numpy as np
 
-from randmedia.checkpoint import checkpoint_key, load_checkpoint, save_checkpoint
+from randmedia.checkpoint import checkpoint_key
 from randmedia.generate import inflation
 from randmedia.generate.jammed import (ConstructionError, JammedPacking, TJParameters, jam,
                                        packing_fraction, validate_packing_input)
 from randmedia.generate.lubachevsky_stillinger import LSParameters, compress
+from randmedia.resumable import ResumableRun
 
 #: per-LP keys of the inflation stage kept in the packing's history
 INFLATION_HISTORY = ("phi",) + inflation.STEP_RECORD_KEYS
@@ -110,28 +111,48 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
                  threads: int = 1) -> MRJPacking:
     """One strictly jammed packing of ``n`` spheres (D = 1) from ``seed`` (module docstring).
 
-    ``checkpoint``: file the state is saved to after the compression and then at LP
-    boundaries (at most every ``checkpoint_seconds``), and resumed from if it belongs to
-    the same seed, size and protocol; removed on success (the polish stage keeps its own
-    file beside it while it runs). Raises :class:`ConstructionError` if the inflation
-    LPs do not converge within ``protocol.inflation.max_lps``.
+    Parameters
+    ----------
+    seed : int
+        Seeds the compression's random start; the rest is deterministic.
+    n : int
+        Spheres.
+    protocol : MRJProtocol
+        Constants of the three stages.
+    dim : int
+        2 or 3.
+    checkpoint : path, optional
+        File the state is saved to after the compression and then at LP boundaries (at most
+        every ``checkpoint_seconds``), and resumed from if it belongs to the same seed, size
+        and protocol; removed on success (the polish stage keeps its own file beside it while
+        it runs). Saving and resuming are :class:`randmedia.resumable.ResumableRun`'s.
+    log, log_seconds
+        Progress of the inflation LPs at most every ``log_seconds`` (and the polish's).
+    threads : int
+        HiGHS threads.
+
+    Returns
+    -------
+    MRJPacking
+        The packing and the record of all three stages.
+
+    Raises
+    ------
+    ConstructionError
+        If the inflation LPs do not converge within ``protocol.inflation.max_lps``.
     """
     log = log or logging.getLogger(__name__)
     validate_packing_input(n, 0.5, dim)
     params = protocol.inflation
-    key = _key(seed, n, dim, protocol)
-    history = {name: [] for name in INFLATION_HISTORY}
-    state = load_checkpoint(checkpoint, key, log) if checkpoint is not None else None
-    started, cpu_started = time.perf_counter(), time.process_time()
+    run = ResumableRun(checkpoint, _key(seed, n, dim, protocol), log,
+                       checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
+    state = run.resume(_restore)
     if state is not None:
-        positions, box = state["positions"], state["box"]
-        history = {name: state[f"history_{name}"].tolist() for name in INFLATION_HISTORY}
-        compression = {name[len("ls_"):]: float(state[name]) for name in state if name.startswith("ls_")}
-        elapsed_before, cpu_before = float(state["elapsed"]), float(state["cpu"])
+        positions, box, history, compression = state
         log.info("resumed from %s after the compression and %d inflation LPs", checkpoint,
                  len(history["phi"]))
     else:
-        elapsed_before = cpu_before = 0.0
+        history = {name: [] for name in INFLATION_HISTORY}
         positions, box, info = compress(np.random.default_rng(seed), n, dim, protocol.compression,
                                         log=log, log_seconds=log_seconds)
         compression = {name: float(info[name]) for name in
@@ -140,26 +161,26 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
                  "(%.1f s)", compression["phi"], compression["pressure"],
                  compression["collisions"], compression["seconds"])
 
-    def save():
-        if checkpoint is None:
-            return
-        save_checkpoint(checkpoint, key, {
-            "positions": positions, "box": box,
-            "elapsed": elapsed_before + time.perf_counter() - started,
-            "cpu": cpu_before + time.process_time() - cpu_started,
-            **{f"ls_{name}": value for name, value in compression.items()},
-            **{f"history_{name}": np.asarray(values, dtype=float) for name, values in history.items()}})
+    def arrays() -> dict:
+        return {"positions": positions, "box": box,
+                **{f"ls_{name}": value for name, value in compression.items()},
+                **{f"history_{name}": np.asarray(values, dtype=float) for name, values in history.items()}}
 
     if state is None:
-        save()
-    last_save = last_log = time.perf_counter()
+        run.save(arrays)
     done = inflation.converged(history["inflation"], history["phi"], params)
-    while not done:
-        if len(history["phi"]) >= params.max_lps:
+    progress = run.progress(None, "inflation", "LPs", done=len(history["phi"]))
+
+    def finished() -> bool:
+        if not done and len(history["phi"]) >= params.max_lps:
             raise ConstructionError(
                 f"the inflation LPs did not converge within max_lps = {params.max_lps} (phi = "
                 f"{packing_fraction(positions, box):.6f}, last sqrt(Gamma) - 1 = "
                 f"{history['inflation'][-1]:.3g})")
+        return done
+
+    def step() -> None:
+        nonlocal positions, box, done
         bound = params.bound(history["inflation"][-1]) if history["phi"] else params.displacement_bound
         positions, box, record = inflation.inflation_step(positions, box, bound,
                                                           backend=params.backend, threads=threads)
@@ -167,28 +188,21 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
         for name in INFLATION_HISTORY:
             history[name].append(record[name])
         done = inflation.converged(history["inflation"], history["phi"], params)
-        now = time.perf_counter()
-        if now - last_log >= log_seconds or done:
-            log.info("inflation LP %d: phi = %.7f, sqrt(Gamma) - 1 = %.3g (realized %.3g), bound "
-                     "%.3g, %d rows, %d backbone spheres (%d components at the bound), solve "
-                     "%.2f s (build %.2f s)", len(history["phi"]), record["phi"],
-                     record["inflation"], record["realized"], bound, record["rows"],
-                     record["n_backbone"], record["backbone_at_bound"], record["solve_seconds"],
-                     record["build_seconds"])
-            last_log = now
-        if now - last_save >= checkpoint_seconds:
-            save()
-            last_save = now
-    save()
+        progress.step(1, force=done, detail=lambda: (
+            f"phi = {record['phi']:.7f}, sqrt(Gamma) - 1 = {record['inflation']:.3g} (realized "
+            f"{record['realized']:.3g}), bound {bound:.3g}, {record['rows']} rows, {record['n_backbone']} "
+            f"backbone spheres ({record['backbone_at_bound']} components at the bound), solve "
+            f"{record['solve_seconds']:.2f} s (build {record['build_seconds']:.2f} s)"))
+
+    run.loop(step, finished, arrays)
+    run.save(arrays)  # a kill in the polish resumes after the inflation
     polish_checkpoint = None if checkpoint is None else \
         Path(checkpoint).with_name(Path(checkpoint).stem + ".polish.npz")
     packing = jam(positions, box, protocol.polish, checkpoint=polish_checkpoint,
                   checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds,
                   threads=threads)
-    seconds = elapsed_before + time.perf_counter() - started
-    cpu_seconds = cpu_before + time.process_time() - cpu_started
-    if checkpoint is not None:
-        Path(checkpoint).unlink(missing_ok=True)
+    seconds, cpu_seconds = run.seconds, run.cpu_seconds
+    run.finish()
     n_inflation = len(history["phi"])
     log.info("strictly jammed after %d inflation and %d TJ LPs in %.1f s (%.1f s CPU): "
              "phi = %.6f", n_inflation, packing.n_lp, seconds, cpu_seconds, packing.phi)
@@ -198,3 +212,10 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
                       history=packing.history, params=protocol, compression=compression,
                       inflation_history={k: np.asarray(v) for k, v in history.items()},
                       n_inflation_lp=n_inflation)
+
+
+def _restore(data: dict):
+    """(positions, box, inflation history, compression record) from a checkpoint's arrays."""
+    history = {name: data[f"history_{name}"].tolist() for name in INFLATION_HISTORY}
+    compression = {name[len("ls_"):]: float(data[name]) for name in data if name.startswith("ls_")}
+    return data["positions"], data["box"], history, compression

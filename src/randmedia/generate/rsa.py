@@ -7,7 +7,9 @@ after the other and kept if the new sphere overlaps none kept before (Torquato,
 so that n spheres of diameter D fill the fraction phi = n v_1(D/2) / L^d. RSA jams
 at phi_s ~ 0.547 (2D) and 0.385 (3D); the start is meant to be far below that.
 
-A cell list with cells of side >= D makes each trial O(1); the random numbers come
+A cell list with cells of side >= D makes each trial O(1): insertion-only head/next
+linked lists on the (n, d) points, not the member table of :mod:`randmedia.cell_list`
+(d-generic, no per-cell capacity, and 1.2-1.8x faster here); the random numbers come
 in batches from the sample's numpy Generator, so the configuration depends only on
 (seed, n, phi, d).
 """

@@ -51,7 +51,8 @@ Delta U and checked against an exact recount at the end of each phase.
 
 Checkpoints: the whole state (positions, energy, step, random state, everything
 recorded so far) is saved at chunk boundaries at most every ``checkpoint_seconds``
-and resumed from; a resumed run is bit-identical to an uninterrupted one.
+and resumed from, by the driver :class:`randmedia.resumable.ResumableRun` (which also
+writes the progress lines); a resumed run is bit-identical to an uninterrupted one.
 """
 
 from __future__ import annotations
@@ -61,14 +62,14 @@ import math
 import os
 import time
 from dataclasses import asdict, dataclass, field
-from pathlib import Path
 
 import numpy as np
 from numba import njit
 
-from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
+from randmedia.checkpoint import array_digest, checkpoint_key
 from randmedia.generate import refuse_invalid
-from randmedia.theory.sphere_caps import check_density, check_radius
+from randmedia.resumable import ResumableRun
+from randmedia.theory.sphere_caps import check_density, check_radius, first_cap_containing
 
 POTENTIALS = ("lj", "udd", "udd_flipped", "uddpar", "uddpar_cubed", "udc", "ucc")
 
@@ -206,14 +207,7 @@ def _axis_cap_counts(x, y, z, radius, cos_thresholds, out):
     for i in range(x.size):
         for k in range(3):
             value = (x[i] if k == 0 else (y[i] if k == 1 else z[i])) / radius
-            lo, hi = 0, n_caps  # first c with cos_thresholds[c] <= value
-            while lo < hi:
-                mid = (lo + hi) // 2
-                if cos_thresholds[mid] <= value:
-                    hi = mid
-                else:
-                    lo = mid + 1
-            hist[k, lo] += 1
+            hist[k, first_cap_containing(cos_thresholds, value)] += 1
     for k in range(3):
         running = 0
         for c in range(n_caps):
@@ -384,7 +378,32 @@ def run_fluid(potential: Potential, radius: float, density: float, temperature: 
               schedule: MCSchedule, rng: np.random.Generator, cos_thresholds: np.ndarray, *,
               checkpoint: str | os.PathLike | None = None, checkpoint_seconds: float = 60.0,
               log: logging.Logger | None = None, log_seconds: float = 10.0) -> MCRun:
-    """Canonical MC of N = round(rho 4 pi R^2) particles on the sphere (module docstring)."""
+    """Canonical MC of N = round(rho 4 pi R^2) particles on the sphere (module docstring).
+
+    Parameters
+    ----------
+    potential : Potential
+        Pair potential, Eqs. (11)-(12).
+    radius, density, temperature : float
+        R, rho and T* of the system (reduced units).
+    schedule : MCSchedule
+        Sweeps of equilibration and production, recording intervals, step tuning.
+    rng : numpy.random.Generator
+        The run's only source of randomness.
+    cos_thresholds : array
+        Non-increasing cosines of the cap half-angles whose particle counts are recorded.
+    checkpoint : path, optional
+        File the state is saved to at chunk boundaries (at most every ``checkpoint_seconds``)
+        and resumed from if it belongs to this run; removed when the run is done.
+    log, log_seconds
+        Progress lines (sweeps, rate, ETA, acceptance, step, U/N) at most every ``log_seconds``.
+
+    Returns
+    -------
+    MCRun
+        Frames, energy and acceptance per sweep, cap counts, frozen step and run statistics;
+        the same whether or not the run was killed and resumed.
+    """
     check_radius(radius)
     check_density(density)
     if not (temperature > 0 and math.isfinite(temperature)):
@@ -404,7 +423,9 @@ def run_fluid(potential: Potential, radius: float, density: float, temperature: 
     n_tune = int(round(schedule.tune_fraction * n_eq))
 
     key = _checkpoint_key(potential, radius, density, temperature, schedule, thresholds, rng)
-    state = _load_checkpoint(checkpoint, key, rng, log) if checkpoint is not None else None
+    run = ResumableRun(checkpoint, key, log, rng=rng, checkpoint_seconds=checkpoint_seconds,
+                       log_seconds=log_seconds)
+    state = run.resume(_restore)
     if state is None:
         start = rng.standard_normal((n, 3))
         start *= radius / np.linalg.norm(start, axis=1)[:, None]
@@ -414,17 +435,20 @@ def run_fluid(potential: Potential, radius: float, density: float, temperature: 
             "energy": np.full(n_eq + n_prod, np.nan), "acceptance": np.full(n_eq + n_prod, np.nan),
             "axis_counts": np.zeros((schedule.n_counts, 3, thresholds.size), dtype=np.uint16),
             "frames": np.full((schedule.n_frames, n, 3), np.nan),
-            "running_energy": float("nan"), "drift": np.full(2, np.nan), "seconds": 0.0,
+            "running_energy": float("nan"), "drift": np.full(2, np.nan),
         }
         state["running_energy"] = float(_total_energy(state["x"], state["y"], state["z"],
                                                       lj4, c1, c2, c3))
+    else:
+        log.info("resumed from %s at sweep %d", checkpoint, state["sweep"])
     x, y, z = state["x"], state["y"], state["z"]
     counts_buffer = np.zeros((0, 3, thresholds.size), dtype=np.int64)
     total = n_eq + n_prod
     pair_evaluations_per_sweep = 2.0 * n * (n - 1)
-    started = time.perf_counter() - state["seconds"]
-    last_save = last_log = time.perf_counter()
-    while state["sweep"] < total:
+    progress = run.progress(total, f"MC {potential.name} N = {n}", "sweeps", done=state["sweep"])
+
+    def chunk() -> None:
+        """Sweeps up to the next chunk boundary (tuning window, phase end or frame)."""
         sweep = state["sweep"]
         producing = sweep >= n_eq
         if producing:
@@ -474,29 +498,22 @@ def run_fluid(potential: Potential, radius: float, density: float, temperature: 
             state["running_energy"] = exact
             if state["sweep"] == n_eq:
                 state["energy"][n_eq - 1] = exact
-        now = time.perf_counter()
-        state["seconds"] = now - started
-        if now - last_log >= log_seconds or state["sweep"] in (n_tune, n_eq, total):
-            rate = length / max(elapsed, 1e-12)
-            log.info("%s sweep %d/%d: %.3g sweeps/s (%.3g pair evaluations/s), acceptance %.3f, "
-                     "step %.4f, U/N = %.5g, ETA %.0f s",
-                     "production" if producing else "equilibration", state["sweep"], total, rate,
-                     rate * pair_evaluations_per_sweep, float(np.mean(acceptances)), state["step"],
-                     state["running_energy"] / n, (total - state["sweep"]) / rate)
-            last_log = now
-        if checkpoint is not None and now - last_save >= checkpoint_seconds and state["sweep"] < total:
-            _save_checkpoint(checkpoint, key, state, rng)
-            last_save = time.perf_counter()
+        progress.step(length, force=state["sweep"] in (n_tune, n_eq, total), detail=lambda: (
+            f"{'production' if producing else 'equilibration'}, "
+            f"{length / max(elapsed, 1e-12) * pair_evaluations_per_sweep:.3g} pair evaluations/s, "
+            f"acceptance {float(np.mean(acceptances)):.3f}, step {state['step']:.4f}, "
+            f"U/N = {state['running_energy'] / n:.5g}"))
 
-    stats = _run_statistics(state, schedule, n, pair_evaluations_per_sweep)
-    if checkpoint is not None:
-        Path(checkpoint).unlink(missing_ok=True)
+    run.loop(chunk, lambda: state["sweep"] >= total, lambda: {name: state[name] for name in _ARRAYS + _SCALARS})
+    stats = _run_statistics(state, schedule, n, pair_evaluations_per_sweep, run.seconds)
+    run.finish()
     return MCRun(frames=state["frames"], energy=state["energy"], acceptance=state["acceptance"],
                  axis_counts=state["axis_counts"], step=state["step"], stats=stats)
 
 
-def _run_statistics(state: dict, schedule: MCSchedule, n: int, pairs_per_sweep: float) -> dict:
-    """Correlation times and equilibration checks of a finished run."""
+def _run_statistics(state: dict, schedule: MCSchedule, n: int, pairs_per_sweep: float,
+                    seconds: float) -> dict:
+    """Correlation times and equilibration checks of a finished run (``seconds``: its wall time)."""
     n_eq = schedule.equilibration_sweeps
     production = state["energy"][n_eq:]
     half = production.size // 2
@@ -512,7 +529,7 @@ def _run_statistics(state: dict, schedule: MCSchedule, n: int, pairs_per_sweep: 
     tau_energy = integrated_autocorrelation_time(production) if production.size >= 4 else float("nan")
     return {
         "n_particles": n,
-        "seconds": state["seconds"],
+        "seconds": seconds,
         "pair_evaluations": pairs_per_sweep * (schedule.equilibration_sweeps + schedule.production_sweeps),
         "acceptance_production": float(np.mean(state["acceptance"][n_eq:])),
         "acceptance_equilibration": float(np.mean(state["acceptance"][:n_eq])),
@@ -531,26 +548,22 @@ def _run_statistics(state: dict, schedule: MCSchedule, n: int, pairs_per_sweep: 
 
 
 def _checkpoint_key(potential, radius, density, temperature, schedule, thresholds, rng) -> str:
+    """Identifies a run: potential, system, schedule, caps and the random state it starts from.
+    ``checkpoint_format`` 2: the wall clock is the driver's ``elapsed`` (format 1 saved ``seconds``),
+    so a checkpoint of the former format belongs to another run and is not misread."""
     return checkpoint_key(potential=asdict(potential), R=radius, rho=density, T=temperature,
                           schedule=asdict(schedule), caps=array_digest(thresholds),
-                          rng=rng.bit_generator.state)
+                          rng=rng.bit_generator.state, checkpoint_format=2)
 
 
 _ARRAYS = ("x", "y", "z", "energy", "acceptance", "axis_counts", "frames", "drift")
-_SCALARS = ("sweep", "step", "running_energy", "seconds")
+_SCALARS = ("sweep", "step", "running_energy")
 
 
-def _save_checkpoint(path, key, state, rng) -> None:
-    save_checkpoint(path, key, {name: state[name] for name in _ARRAYS + _SCALARS}, rng)
-
-
-def _load_checkpoint(path, key, rng, log):
-    data = load_checkpoint(path, key, log, rng)
-    if data is None:
-        return None
+def _restore(data: dict) -> dict:
+    """The run's state from a checkpoint's arrays (KeyError if one is missing)."""
     state = {name: data[name] for name in _ARRAYS}
     state["sweep"] = int(data["sweep"])
-    for name in ("step", "running_energy", "seconds"):
+    for name in ("step", "running_energy"):
         state[name] = float(data[name])
-    log.info("resumed from %s at sweep %d", path, state["sweep"])
     return state

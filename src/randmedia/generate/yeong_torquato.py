@@ -90,22 +90,22 @@ cells (:class:`_PendingCells`) stay a few pixels wide. Off by default
 
 from __future__ import annotations
 
+import functools
 import logging
 import math
 import os
 import time
 from dataclasses import asdict, dataclass, field
-from pathlib import Path
 from typing import Callable
 
 import numpy as np
 from numba import njit
 
 from randmedia.describe.two_phase import RadialBinning, periodic_autocorrelation
-from randmedia.checkpoint import array_digest, checkpoint_key, load_checkpoint, save_checkpoint
+from randmedia.checkpoint import array_digest, checkpoint_key
 from randmedia.generate import refuse_invalid
 from randmedia.generate.yt_stencil import Stencil, apply_flips_kernel, shell_counts
-from randmedia.progress import Progress
+from randmedia.resumable import ResumableRun
 
 # face neighbours (dz, dy, dx) of the interface test: the 2D four first, in the order the
 # 2D construction always used (candidate-list order, hence trajectories, unchanged), then z
@@ -613,18 +613,48 @@ def construct(
 ) -> Construction:
     """Construct a periodic image (1 = phase 2) with S2 of phase 2 close to ``target_s2``.
 
-    ``side``: L for an L x L image (the paper's 2D media), or the image shape (ny, nx)
-    or (nz, ny, nx) -- e.g. (N, N, N) for 3D media (:func:`image_shape`). Every count of
-    the schedule scales with the number of voxels N^d (trials, temperature), so a 2D
-    construction is the same whichever way its shape is given, and bit-identical to the
-    former 2D-only driver.
-    ``checkpoint``: file to save the state to (image + random state, at stage
-    boundaries, at most every ``checkpoint_seconds``) and to resume from if it
-    exists and belongs to the same construction (same parameters, shape and dimension
-    included, and start state); it is removed on success.
-    ``scan``: use the straightforward per-trial disk scan (benchmark baseline).
-    ``batch``: voxel flips (two per accepted swap) collected before they are applied
-    to the shell counts; a performance knob only -- any value gives the same image.
+    Parameters
+    ----------
+    target_s2 : callable
+        S2 of phase 2 as a function of r (pixels); S2(0) must equal ``phi2``.
+    phi2 : float
+        Volume fraction of phase 2, in (0, 1).
+    side : int or tuple
+        L for an L x L image (the paper's 2D media), or the image shape (ny, nx) or
+        (nz, ny, nx) -- e.g. (N, N, N) for 3D media (:func:`image_shape`). Every count of the
+        schedule scales with the number of voxels N^d (trials, temperature), so a 2D
+        construction is the same whichever way its shape is given, and bit-identical to the
+        former 2D-only driver.
+    cutoff : float
+        l_c: the energy sums the bins 0 < r <= l_c.
+    rng : numpy.random.Generator
+        The construction's only source of randomness.
+    schedule : AnnealingSchedule
+        Trials, temperatures, refinement, tolerance, extra and long-range stages.
+    checkpoint : path, optional
+        File to save the state to (image + random state, at stage boundaries, at most every
+        ``checkpoint_seconds``) and to resume from if it exists and belongs to the same
+        construction (same parameters, shape and dimension included, and start state); removed
+        on success. Saving, resuming and the per-stage progress lines are
+        :class:`randmedia.resumable.ResumableRun`'s.
+    log : logging.Logger, optional
+        Gets a progress line per stage.
+    scan : bool
+        Use the straightforward per-trial disk scan (benchmark baseline).
+    batch : int
+        Voxel flips (two per accepted swap) collected before they are applied to the shell
+        counts; a performance knob only -- any value gives the same image.
+
+    Returns
+    -------
+    Construction
+        The image, its Delta S2, energy, S2 and target per bin, and the run's statistics
+        (``stats``: trials, accepted swaps and per-stage records of this process's stages).
+
+    Raises
+    ------
+    ConstructionError
+        If Delta S2 still exceeds ``schedule.tolerance`` after the extra stages.
     """
     if not isinstance(batch, (int, np.integer)) or batch < 2:
         raise ValueError(f"batch must be an integer >= 2, got {batch!r}")
@@ -650,10 +680,13 @@ def construct(
         return t_initial * schedule.final_temperature_ratio ** (k / max(1, n_cool - 1))
 
     key = _checkpoint_key(phi2, shape, cutoff, target, schedule, rng, scan)
-    stage, long_range_done, image = 0, 0, None
-    if checkpoint is not None:
-        stage, long_range_done, image = _load_checkpoint(checkpoint, key, rng, log, n_pixels)
-    if image is None:
+    run = ResumableRun(checkpoint, key, log, rng=rng, checkpoint_seconds=checkpoint_seconds, log_seconds=0.0)
+    resumed = run.resume(functools.partial(_restore, n_voxels=n_pixels))
+    if resumed is not None:
+        stage, long_range_done, image = resumed
+        log.info("resumed from %s at stage %d (+ %d long-range stages)", checkpoint, stage, long_range_done)
+    else:
+        stage, long_range_done = 0, 0
         image = np.zeros(n_pixels, dtype=np.uint8)
         image[rng.permutation(n_pixels)[:n_tracked]] = 1
 
@@ -661,17 +694,25 @@ def construct(
              geometry.describe(), schedule.n_stages, trials_per_stage)
     h = geometry.shell_counts(image, scan)
     diff = geometry.s2(image, None if scan else h)[1:] - target[1:]
-    started, last_save = time.perf_counter(), time.perf_counter()
     trials_done = accepted_total = 0
     last_stage = schedule.n_stages + schedule.max_extra_stages
     delta_s2 = float(np.mean(np.abs(diff)))
     stage_batch = batch
-    progress = Progress(schedule.n_stages * trials_per_stage, f"YT {name}", log, unit="trials",
-                        start=min(stage, schedule.n_stages) * trials_per_stage)
+    # one line per stage (the driver's log_seconds = 0)
+    progress = run.progress(schedule.n_stages * trials_per_stage, f"YT {name}", "trials",
+                            done=min(stage, schedule.n_stages) * trials_per_stage)
     per_stage = []  # this run's stages: trials, accepted, wall and CPU seconds, Delta S2
-    while stage < last_stage and long_range_done == 0:  # (resumed in a long-range stage: done)
-        if stage >= schedule.n_stages and delta_s2 <= schedule.tolerance:
-            break
+
+    def saved() -> dict:
+        return {"stage": stage, "long_range_done": long_range_done, "image": image}
+
+    def annealed() -> bool:
+        # (resumed in a long-range stage: done)
+        return (stage >= last_stage or long_range_done > 0
+                or (stage >= schedule.n_stages and delta_s2 <= schedule.tolerance))
+
+    def anneal_stage() -> None:
+        nonlocal stage, trials_done, accepted_total, stage_batch, delta_s2
         tic, cpu = time.perf_counter(), time.process_time()
         accepted = _anneal(image, h, diff, trials_per_stage, temperature(stage), stage >= n_cool,
                            scan, rng, stage_batch, *geometry.kernel_args())
@@ -688,24 +729,25 @@ def construct(
             f"stage {stage}/{schedule.n_stages} T={temperature(stage - 1):.3g}: {elapsed:.3g} s, "
             f"{trials_per_stage / elapsed:.3g} trials/s, acceptance {accepted / trials_per_stage:.4f}, "
             f"E={float(np.sum(diff**2)):.4g}, dS2={delta_s2:.3g}"))
-        if checkpoint is not None and time.perf_counter() - last_save >= checkpoint_seconds:
-            _save_checkpoint(checkpoint, key, stage, 0, image, rng)
-            last_save = time.perf_counter()
+
+    run.loop(anneal_stage, annealed, saved)
 
     long_range_accepted = 0
     if long_range_done < schedule.long_range_stages and (delta_s2 <= schedule.tolerance
                                                          or long_range_done > 0):
-        del h
+        h = None  # (frees the shell counts before the long-range table is built)
         far = _Geometry(shape, math.floor(schedule.long_range_cutoff_over_L * min(shape)))
         _, far_target = tracked_target(target_s2, phi2, far.binning)
         tic = time.perf_counter()
-        h = far.shell_counts(image, scan)
-        far_diff = far.s2(image, None if scan else h)[1:] - far_target[1:]
+        far_h = far.shell_counts(image, scan)
+        far_diff = far.s2(image, None if scan else far_h)[1:] - far_target[1:]
         log.info("long-range stages: bins 0 < r <= %d, shell counts in %.1f s, dS2 = %.3g",
                  far.cutoff, time.perf_counter() - tic, float(np.mean(np.abs(far_diff))))
-        while long_range_done < schedule.long_range_stages:
+
+        def long_range_stage() -> None:
+            nonlocal long_range_done, trials_done, long_range_accepted, stage_batch
             tic = time.perf_counter()
-            accepted = _anneal(image, h, far_diff, trials_per_stage, temperature(n_cool - 1), True,
+            accepted = _anneal(image, far_h, far_diff, trials_per_stage, temperature(n_cool - 1), True,
                                scan, rng, stage_batch, *far.kernel_args())
             long_range_done += 1
             trials_done += trials_per_stage
@@ -715,16 +757,16 @@ def construct(
                      long_range_done, schedule.long_range_stages,
                      trials_per_stage / (time.perf_counter() - tic), accepted / trials_per_stage,
                      far.cutoff, float(np.mean(np.abs(far_diff))))
-            if checkpoint is not None and time.perf_counter() - last_save >= checkpoint_seconds:
-                _save_checkpoint(checkpoint, key, stage, long_range_done, image, rng)
-                last_save = time.perf_counter()
+
+        run.loop(long_range_stage, lambda: long_range_done >= schedule.long_range_stages, saved)
         accepted_total += long_range_accepted
-    del h
+        far_h = None
+    h = None  # (frees the shell counts before the FFT)
 
     # final S2 from the FFT estimator: independent of the incremental bookkeeping
     s2_tracked = geometry.binning.average(periodic_autocorrelation(image.reshape(shape)))
     delta_s2 = float(np.mean(np.abs(s2_tracked[1:] - target[1:])))
-    seconds = time.perf_counter() - started
+    seconds = run.run_seconds
     stats = {"trials": trials_done, "accepted": accepted_total, "stages": stage,
              "long_range_stages": long_range_done, "long_range_accepted": long_range_accepted,
              "seconds": seconds, "schedule": asdict(schedule), "per_stage": per_stage}
@@ -733,8 +775,7 @@ def construct(
             f"construction did not converge: Delta S2 = {delta_s2:.3g} > tolerance "
             f"{schedule.tolerance:g} after {stage} stages (phi2 = {phi2}, {name} voxels, l_c = {cutoff})"
         )
-    if checkpoint is not None:
-        Path(checkpoint).unlink(missing_ok=True)
+    run.finish()
     tracked_is_phase2 = phi2 <= 0.5
     phase2 = image if tracked_is_phase2 else 1 - image
     # the measured S2 complements with the image's own fraction (s2_tracked[0]; round(phi N^d)
@@ -776,20 +817,10 @@ def _checkpoint_key(phi2, shape, cutoff, target, schedule, rng, scan) -> str:
                           target=array_digest(target), rng=rng.bit_generator.state)
 
 
-def _save_checkpoint(path, key, stage, long_range_done, image, rng) -> None:
-    save_checkpoint(path, key, {"stage": stage, "long_range_done": long_range_done, "image": image}, rng)
-
-
-def _load_checkpoint(path, key, rng, log, n_voxels):
-    state = rng.bit_generator.state
-    data = load_checkpoint(path, key, log, rng)
-    if data is None:
-        return 0, 0, None
+def _restore(data: dict, n_voxels: int):
+    """(stage, long-range stages done, image) from a checkpoint's arrays; ValueError if the
+    image is not one of ``n_voxels`` uint8 voxels (the key names the shape: a bug guard)."""
     stage, long_range_done, image = int(data["stage"]), int(data["long_range_done"]), data["image"]
-    if image.shape != (n_voxels,) or image.dtype != np.uint8:  # (the key names the shape)
-        log.warning("%s holds an image of %s %s, not %d voxels; starting afresh", path,
-                    image.dtype, image.shape, n_voxels)
-        rng.bit_generator.state = state
-        return 0, 0, None
-    log.info("resumed from %s at stage %d (+ %d long-range stages)", path, stage, long_range_done)
+    if image.shape != (n_voxels,) or image.dtype != np.uint8:
+        raise ValueError(f"an image of {image.dtype} {image.shape}, not {n_voxels} voxels")
     return stage, long_range_done, image

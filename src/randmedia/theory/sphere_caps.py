@@ -34,6 +34,7 @@ from __future__ import annotations
 import math
 
 import numpy as np
+from numba import njit
 
 
 
@@ -82,6 +83,22 @@ def cos_thresholds(a, radius: float) -> np.ndarray:
     if np.any(np.diff(a) <= 0):
         raise ValueError("cap radii must increase")
     return np.sqrt(np.clip(1.0 - (a / radius) ** 2, 0.0, 1.0))
+
+
+@njit(cache=True)
+def first_cap_containing(thresholds, value):
+    """Index of the smallest cap holding a point with p.c / R = ``value``: the first k with
+    ``thresholds[k] <= value`` for the decreasing :func:`cos_thresholds` (bisection), or
+    ``thresholds.size`` if it lies in none. A histogram of these indices, summed cumulatively,
+    gives the counts in every cap of the grid at once."""
+    lo, hi = 0, thresholds.size
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if thresholds[mid] <= value:
+            hi = mid
+        else:
+            lo = mid + 1
+    return lo
 
 
 def cap_angle(a, radius: float) -> np.ndarray:

@@ -316,6 +316,7 @@ class HardParticleChain:
     # ----------------------------------------------------------------- checkpoints
 
     def state(self) -> dict:
+        """The whole state of the chain (arrays, counters, random state, samples) by name."""
         return {
             "stage": self.stage, "box": self.box, "pos": self.pos, "unwrapped": self.unwrapped,
             "reference": self.reference, "step": self.step, "window_hist": self.window_hist,
@@ -330,7 +331,9 @@ class HardParticleChain:
             "rng_state": json.dumps(self.rng.bit_generator.state, default=int),
         }
 
-    def restore(self, data) -> None:
+    def restore(self, data) -> "HardParticleChain":
+        """This chain set to the arrays of :meth:`state` (KeyError / ValueError if they are
+        incomplete); returns itself."""
         self.stage = int(data["stage"])
         self.box = data["box"].copy()
         self.pos = data["pos"].copy()
@@ -348,3 +351,4 @@ class HardParticleChain:
                         zip(data["sample_positions"], diagnostics, data["sample_histograms"])]
         self.rng.bit_generator.state = json.loads(str(data["rng_state"]))
         self._rebuild_cells()
+        return self

@@ -5,7 +5,8 @@ works in blocks of ``block_sweeps`` sweeps whose boundaries depend only on the c
 itself, and a checkpoint (every ``checkpoint_seconds`` at a block boundary; arrays,
 counters, random state and the samples taken so far) resumes the bit-identical chain
 after a kill. Progress (sweeps, rates, acceptance, step, MSD, ETA) goes to the log
-every ``log_seconds``; every sample is checked for overlaps independently of the
+every ``log_seconds``. Checkpoints and progress are those of the common driver
+:class:`randmedia.resumable.ResumableRun`; every sample is checked for overlaps independently of the
 Monte Carlo cell lists before it is returned.
 """
 
@@ -13,40 +14,21 @@ from __future__ import annotations
 
 import logging
 import os
-import time
 from dataclasses import asdict
-from pathlib import Path
 
 import numpy as np
 
-from randmedia.checkpoint import checkpoint_key, load_checkpoint, save_checkpoint
+from randmedia.checkpoint import checkpoint_key
 from randmedia.generate.hard_particles.chain import ChainResult, HardParticleChain
 from randmedia.generate.hard_particles.contact import contact_fit
 from randmedia.generate.hard_particles.geometry import count_overlaps, validate_system
 from randmedia.generate.hard_particles.settings import ChainError, MCSettings
+from randmedia.resumable import ResumableRun
 
 
 def _checkpoint_key(n, box_lengths, diameter, n_samples, settings, rng, start) -> str:
     return checkpoint_key(n=n, box=np.asarray(box_lengths).tolist(), diameter=diameter, start=start,
                           n_samples=n_samples, settings=asdict(settings), rng=rng.bit_generator.state)
-
-
-def _save(path, key, chain: HardParticleChain) -> None:
-    save_checkpoint(path, key, chain.state())
-
-
-def _load(path, key, chain: HardParticleChain, log) -> bool:
-    data = load_checkpoint(path, key, log)
-    if data is None:
-        return False
-    try:
-        chain.restore(data)
-    except (KeyError, ValueError) as exc:
-        log.warning("%s is incomplete (%s); starting afresh", path, exc)
-        return False
-    log.info("resumed from %s: stage %s, %d sweeps, %d samples", path,
-             chain.STAGES[chain.stage], chain.counters["sweeps"], len(chain.samples))
-    return True
 
 
 def run_chain(n_particles: int, box_lengths, diameter: float, n_samples: int,
@@ -56,13 +38,38 @@ def run_chain(n_particles: int, box_lengths, diameter: float, n_samples: int,
               start: str = "auto", keep_checkpoint: bool = False) -> ChainResult:
     """Run one chain to ``n_samples`` production samples (:mod:`~randmedia.generate.hard_particles.chain`).
 
-    ``box_lengths`` (d,) of the periodic orthogonal box, d = 2 or 3, in the units of
-    ``diameter``. ``checkpoint``: file to save the chain state to (at block boundaries,
-    at most every ``checkpoint_seconds``) and to resume from if it belongs to the same
-    chain; removed when the chain finishes unless ``keep_checkpoint`` (then the final
-    state is saved, so that a caller killed while writing its outputs resumes at once;
-    the caller removes it afterwards). The returned samples are the same whether or
-    not the chain was interrupted and resumed.
+    Parameters
+    ----------
+    n_particles : int
+        N.
+    box_lengths : array (d,)
+        Sides of the periodic orthogonal box, d = 2 or 3, in the units of ``diameter``.
+    diameter : float
+        D.
+    n_samples : int
+        Production samples to take.
+    rng : numpy.random.Generator
+        The chain's only source of randomness.
+    settings : MCSettings
+        Step tuning, equilibration and sampling criteria, block size, contact histogram.
+    checkpoint : path, optional
+        File to save the chain state to (at block boundaries, at most every
+        ``checkpoint_seconds``) and to resume from if it belongs to the same chain; removed
+        when the chain finishes unless ``keep_checkpoint`` (then the final state is saved, so
+        that a caller killed while writing its outputs resumes at once; the caller removes it
+        afterwards). Saving, resuming and the progress lines are
+        :class:`randmedia.resumable.ResumableRun`'s.
+    log, log_seconds
+        Progress lines (sweeps, rate, moves per CPU second, acceptance, step, MSD, samples,
+        ETA once producing) at most every ``log_seconds``.
+    start : str
+        'auto', 'lattice' or 'rsa' (:meth:`HardParticleChain.start`).
+
+    Returns
+    -------
+    ChainResult
+        The samples (checked for overlaps), the equilibration record and the pooled contact
+        fit; the same whether or not the chain was interrupted and resumed.
     """
     log = log or logging.getLogger(__name__)
     validate_system(n_particles, box_lengths, diameter, settings.contact_range)
@@ -71,26 +78,27 @@ def run_chain(n_particles: int, box_lengths, diameter: float, n_samples: int,
     box_lengths = np.asarray(box_lengths, dtype=float)
     key = _checkpoint_key(int(n_particles), box_lengths, float(diameter), int(n_samples),
                           settings, rng, start)
-    chain = HardParticleChain(n_particles, box_lengths, diameter, n_samples, settings, rng, start)
-    if checkpoint is None or not _load(checkpoint, key, chain, log):
+    run = ResumableRun(checkpoint, key, log, checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
+    # the chain keeps its random state among its own arrays (HardParticleChain.state)
+    chain = run.resume(HardParticleChain(n_particles, box_lengths, diameter, n_samples, settings, rng,
+                                         start).restore)
+    if chain is not None:
+        log.info("resumed from %s: stage %s, %d sweeps, %d samples", checkpoint,
+                 chain.STAGES[chain.stage], chain.counters["sweeps"], len(chain.samples))
+    else:  # (a fresh chain: a failed restore may have left parts of a checkpoint behind)
+        chain = HardParticleChain(n_particles, box_lengths, diameter, n_samples, settings, rng, start)
         chain.start()
         log.info("start: N = %d, d = %d, phi = %.4f, box %s: %s", chain.n, chain.dim,
                  chain.phi, box_lengths, chain.start_method)
-    started = last_save = last_log = time.perf_counter()
-    cpu_started = time.process_time()
-    sweeps_at_start = chain.counters["sweeps"]
-    while chain.stage < 4:
+    progress = run.progress(None, f"chain N = {chain.n}", "sweeps", done=chain.counters["sweeps"])
+
+    def advance() -> None:
+        before = chain.counters["sweeps"]
         chain.advance()
-        now = time.perf_counter()
-        if checkpoint is not None and now - last_save >= checkpoint_seconds:
-            _save(checkpoint, key, chain)
-            last_save = now
-        if now - last_log >= log_seconds:
-            _log_progress(log, chain, now - started, time.process_time() - cpu_started,
-                          chain.counters["sweeps"] - sweeps_at_start)
-            last_log = now
-    _log_progress(log, chain, time.perf_counter() - started, time.process_time() - cpu_started,
-                  chain.counters["sweeps"] - sweeps_at_start)
+        _report(progress, chain, chain.counters["sweeps"] - before, run.run_cpu_seconds)
+
+    run.loop(advance, lambda: chain.stage >= 4, chain.state)
+    _report(progress, chain, 0, run.run_cpu_seconds, force=True)
     for index, sample in enumerate(chain.samples):  # exact check, independent of the cell lists
         overlaps = count_overlaps(sample.positions, box_lengths, diameter)
         if overlaps:
@@ -103,31 +111,34 @@ def run_chain(n_particles: int, box_lengths, diameter: float, n_samples: int,
                                 "extended_samples": chain.counters["extended_samples"],
                                 "overall_acceptance": chain.counters["accepted"]
                                 / max(1, chain.counters["trials"])})
-    if checkpoint is not None:
-        if keep_checkpoint:
-            _save(checkpoint, key, chain)
-        else:
-            Path(checkpoint).unlink(missing_ok=True)
+    run.finish(chain.state if keep_checkpoint else None)
     return ChainResult(box_lengths=box_lengths, diameter=float(diameter), phi=chain.phi,
                        samples=chain.samples, equilibration=chain.equilibration, contact=pooled)
 
 
-def _log_progress(log, chain: HardParticleChain, seconds: float, cpu_seconds: float,
-                  sweeps: int) -> None:
-    """Progress line: sweeps, rate (wall and per CPU second), acceptance, step, MSD, ETA."""
-    rate = sweeps / seconds if seconds > 0 else float("nan")
-    cpu_rate = sweeps * chain.n / cpu_seconds if cpu_seconds > 0 else float("nan")
+def _report(progress, chain: HardParticleChain, sweeps: int, cpu_seconds: float,
+            force: bool = False) -> None:
+    """Progress line after ``sweeps`` more sweeps: stage, moves per CPU second of this
+    process, acceptance, step, MSD, samples; once producing, the total (hence ETA) is the
+    sweeps done plus those the remaining samples need at the sampling interval."""
     stage = chain.STAGES[min(chain.stage, 4)]
-    eta = ""
-    if stage == "produce" and rate > 0 and chain.counters["interval"]:
+    total = None
+    if stage == "produce" and chain.counters["interval"]:
         remaining = (chain.n_samples - len(chain.samples)) * chain.counters["interval"] \
             - chain.counters["window_sweeps"]
-        eta = f", ETA {max(0.0, remaining / rate):.0f} s"
-    if chain.counters["window_trials"]:
-        acceptance = chain.counters["window_accepted"] / chain.counters["window_trials"]
-    else:
-        acceptance = chain.counters["accepted"] / max(1, chain.counters["trials"])
-    log.info("%s: %d sweeps (%.3g sweeps/s, %.3g moves per CPU s), acceptance %.3f, step "
-             "%.4g D, MSD %.3g D^2, samples %d/%d%s", stage, chain.counters["sweeps"], rate,
-             cpu_rate, acceptance, chain.step / chain.diameter, chain.msd(),
-             len(chain.samples), chain.n_samples, eta)
+        total = chain.counters["sweeps"] + max(0, remaining)
+    elif stage == "done":
+        total = chain.counters["sweeps"]
+
+    def detail() -> str:
+        if chain.counters["window_trials"]:
+            acceptance = chain.counters["window_accepted"] / chain.counters["window_trials"]
+        else:
+            acceptance = chain.counters["accepted"] / max(1, chain.counters["trials"])
+        moves = (progress.done - progress.start_done) * chain.n
+        cpu_rate = moves / cpu_seconds if cpu_seconds > 0 else float("nan")
+        return (f"{stage}, {cpu_rate:.3g} moves per CPU s, acceptance {acceptance:.3f}, step "
+                f"{chain.step / chain.diameter:.4g} D, MSD {chain.msd():.3g} D^2, samples "
+                f"{len(chain.samples)}/{chain.n_samples}")
+
+    progress.step(sweeps, detail, total=total, force=force)
