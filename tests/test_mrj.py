@@ -10,6 +10,8 @@ killed and resumed from its checkpoint gives the same packing.
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 import pytest
 
@@ -66,6 +68,21 @@ def test_convergence_by_stall():
     assert not inflation.converged([], [], params)
 
 
+def test_a_creeping_inflation_hands_over_but_is_not_called_jammed():
+    """phi still grows every LP (sqrt(Gamma) - 1 ~ 1e-7 >> tolerance) but by < creep_gain over
+    creep_lps LPs: the stage ends as "creeping", not as collectively jammed."""
+    params = inflation.InflationParameters(tolerance=1e-10, stall_lps=5, creep_gain=1e-5, creep_lps=10)
+    phis = list(0.6357 * (1 + 3e-7 * np.arange(11)))  # 3e-6 over 10 LPs
+    inflations = [1e-7] * 11
+    assert inflation.stop_reason(inflations[:10], phis[:10], params) is None  # too few LPs yet
+    assert inflation.stop_reason(inflations, phis, params) == "creeping"
+    assert not inflation.converged(inflations, phis, params)
+    faster = list(0.6357 * (1 + 2e-6 * np.arange(11)))  # 2e-5 over 10 LPs: still densifying
+    assert inflation.stop_reason(inflations, faster, params) is None
+    assert inflation.stop_reason(inflations, phis, replace(params, creep_gain=0.0)) is None
+    assert inflation.stop_reason([1e-11] * 11, phis, params) == "no inflation"
+
+
 def test_inflation_refuses_a_cutoff_beyond_the_cell():
     positions, box = bond_order.cubic_lattice("fcc", 1)
     with pytest.raises(ValueError, match="half width"):
@@ -75,6 +92,7 @@ def test_inflation_refuses_a_cutoff_beyond_the_cell():
 @pytest.mark.parametrize("field, value", [
     ("displacement_bound", 0.0), ("displacement_bound", 0.5), ("final_displacement_bound", 0.1),
     ("tolerance", 0.0), ("stall_lps", 1), ("max_lps", 0), ("backend", "glpk"),
+    ("creep_gain", -1e-6), ("creep_lps", 1),
 ])
 def test_bad_inflation_parameters_are_refused(field, value):
     with pytest.raises(ValueError, match=field):

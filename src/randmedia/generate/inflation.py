@@ -33,6 +33,15 @@ is measurable. Then the packing is collectively jammed in its cell and the row d
 are its contact forces (Artiaco et al., Sec. II B); the largest move of a sphere of
 the force-bearing backbone (>= d + 1 rows with a positive dual) is recorded.
 
+Creep: some packings keep a collective sliding motion that the fixed cell cannot stop;
+each LP then moves a group of spheres by the bound and gains only sqrt(Gamma) - 1 ~ 1e-7
+(paper-config MRJ sample 9, N = 2000: 1000 LPs from phi 0.63570 to ~0.6363 without
+converging). When phi grew by less than ``creep_gain`` (relative) over the last
+``creep_lps`` LPs the stage ends (:func:`stop_reason` "creeping") and the caller hands the
+packing to a method that can also deform the cell (the Torquato-Jiao polish of
+:mod:`randmedia.generate.mrj`), which removes such motions at a much larger gain per LP.
+The packing is then *not* certified collectively jammed by this stage.
+
 Every LP is recorded (:data:`STEP_RECORD_KEYS`): the inflation sqrt(Gamma) - 1 it
 predicted, the gain it realized, the rows, the displacement components at their bound
 (of backbone spheres and of all) with the sum of their reduced costs (what the bound
@@ -66,6 +75,8 @@ class InflationParameters:
     switch_inflation: float = 1.0e-5
     tolerance: float = 1.0e-10
     stall_lps: int = 5
+    creep_gain: float = 1.0e-5
+    creep_lps: int = 10
     max_lps: int = 1000
     backend: str = "highs-ipm"
 
@@ -76,6 +87,8 @@ class InflationParameters:
             "switch_inflation": 0 < self.switch_inflation < 1,
             "tolerance": 0 < self.tolerance < 1e-3,
             "stall_lps": int(self.stall_lps) == self.stall_lps and self.stall_lps >= 2,
+            "creep_gain": 0 <= self.creep_gain < 1e-2,
+            "creep_lps": int(self.creep_lps) == self.creep_lps and self.creep_lps >= 2,
             "max_lps": int(self.max_lps) == self.max_lps and self.max_lps >= 1,
             "backend": self.backend in packing_lp.BACKENDS and self.backend != "scipy",
         }
@@ -159,12 +172,26 @@ def inflation_step(positions: np.ndarray, box: np.ndarray, bound: float, *,
     return new_positions, new_box, record
 
 
+def stop_reason(inflations, phis, params: InflationParameters) -> str | None:
+    """Why the iLP stage ends after these per-LP histories, or None to go on (module
+    docstring): "no inflation" (the last LP predicts sqrt(Gamma) - 1 < ``tolerance``) or
+    "stalled" (phi grew by at most ``tolerance`` relative over ``stall_lps`` LPs): collectively
+    jammed; "creeping" (phi grew by less than ``creep_gain`` relative over ``creep_lps`` LPs;
+    ``creep_gain`` = 0 never): a sliding motion the fixed cell does not stop."""
+    if not phis:
+        return None
+    if inflations[-1] < params.tolerance:
+        return "no inflation"
+    k = params.stall_lps
+    if len(phis) > k and phis[-1] - phis[-1 - k] <= params.tolerance * phis[-1]:
+        return "stalled"
+    k = params.creep_lps
+    if len(phis) > k and phis[-1] - phis[-1 - k] < params.creep_gain * phis[-1]:
+        return "creeping"
+    return None
+
+
 def converged(inflations, phis, params: InflationParameters) -> bool:
     """Collectively jammed (module docstring): the last LP predicts no inflation, or phi
     stalled over the last ``params.stall_lps`` LPs. Arguments: the per-LP histories."""
-    if not phis:
-        return False
-    if inflations[-1] < params.tolerance:
-        return True
-    k = params.stall_lps
-    return len(phis) > k and phis[-1] - phis[-1 - k] <= params.tolerance * phis[-1]
+    return stop_reason(inflations, phis, params) in ("no inflation", "stalled")

@@ -16,7 +16,9 @@ behind the choice):
    stage only brings the spheres close to their jammed state (gaps ~ D / pressure).
 2. **Collective jamming in the fixed cell** (:mod:`randmedia.generate.inflation`):
    iterated inflation LPs until no sphere of the backbone can move and no inflation is
-   left. Each step is exact (conservative constraints), so nothing is ever rejected.
+   left, or until they only creep (phi gains < ``creep_gain`` over ``creep_lps`` LPs: a
+   sliding motion the fixed cell does not stop, which stage 3 removes). Each step is
+   exact (conservative constraints), so nothing is ever rejected.
 3. **Strict jamming** (:func:`randmedia.generate.jammed.jam`): TJ LPs with a deformable
    cell (minimize Tr epsilon) and small strain bounds until the volume cannot be lowered
    to first order: the cell's d (d + 1) / 2 strain degrees of freedom are blocked too.
@@ -79,12 +81,15 @@ class MRJPacking(JammedPacking):
     compression: dict = field(default_factory=dict)   # LS: phi, pressure, collisions, seconds
     inflation_history: dict = field(default_factory=dict)
     n_inflation_lp: int = 0
+    #: why the inflation stage ended (:func:`randmedia.generate.inflation.stop_reason`)
+    inflation_stop: str = ""
 
     def construction_attrs(self) -> dict:
         attrs = {f"{stage}_{k}": v for stage, values in self.params.as_dict().items()
                  for k, v in values.items()}
         attrs.update({f"compression_final_{k}": v for k, v in self.compression.items()})
         attrs["n_inflation_lp"] = self.n_inflation_lp
+        attrs["inflation_stop"] = self.inflation_stop
         attrs["n_polish_lp"] = self.n_lp - self.n_inflation_lp
         return attrs
 
@@ -168,33 +173,34 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
 
     if state is None:
         run.save(arrays)
-    done = inflation.converged(history["inflation"], history["phi"], params)
+    reason = inflation.stop_reason(history["inflation"], history["phi"], params)
     progress = run.progress(None, "inflation", "LPs", done=len(history["phi"]))
 
     def finished() -> bool:
-        if not done and len(history["phi"]) >= params.max_lps:
+        if reason is None and len(history["phi"]) >= params.max_lps:
             raise ConstructionError(
                 f"the inflation LPs did not converge within max_lps = {params.max_lps} (phi = "
                 f"{packing_fraction(positions, box):.6f}, last sqrt(Gamma) - 1 = "
                 f"{history['inflation'][-1]:.3g})")
-        return done
+        return reason is not None
 
     def step() -> None:
-        nonlocal positions, box, done
+        nonlocal positions, box, reason
         bound = params.bound(history["inflation"][-1]) if history["phi"] else params.displacement_bound
         positions, box, record = inflation.inflation_step(positions, box, bound,
                                                           backend=params.backend, threads=threads)
         record["phi"] = packing_fraction(positions, box)
         for name in INFLATION_HISTORY:
             history[name].append(record[name])
-        done = inflation.converged(history["inflation"], history["phi"], params)
-        progress.step(1, force=done, detail=lambda: (
+        reason = inflation.stop_reason(history["inflation"], history["phi"], params)
+        progress.step(1, force=reason is not None, detail=lambda: (
             f"phi = {record['phi']:.7f}, sqrt(Gamma) - 1 = {record['inflation']:.3g} (realized "
             f"{record['realized']:.3g}), bound {bound:.3g}, {record['rows']} rows, {record['n_backbone']} "
             f"backbone spheres ({record['backbone_at_bound']} components at the bound), solve "
             f"{record['solve_seconds']:.2f} s (build {record['build_seconds']:.2f} s)"))
 
     run.loop(step, finished, arrays)
+    log.info("inflation stage ended after %d LPs: %s", len(history["phi"]), reason)
     run.save(arrays)  # a kill in the polish resumes after the inflation
     polish_checkpoint = None if checkpoint is None else \
         Path(checkpoint).with_name(Path(checkpoint).stem + ".polish.npz")
@@ -211,7 +217,7 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
                       lp_seconds=float(np.sum(history["solve_seconds"])) + packing.lp_seconds,
                       history=packing.history, params=protocol, compression=compression,
                       inflation_history={k: np.asarray(v) for k, v in history.items()},
-                      n_inflation_lp=n_inflation)
+                      n_inflation_lp=n_inflation, inflation_stop=reason)
 
 
 def _restore(data: dict):
