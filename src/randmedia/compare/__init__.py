@@ -52,7 +52,24 @@ UPPER_BOUND_NOTE = " (upper bound: passed if ours <= published)"
 
 def tolerance(ours_sem: float, *, k_sigma: float, published_err: float = 0.0,
               systematic: float = 0.0) -> float:
-    """k_sigma x combined statistical error + systematic margin."""
+    """k_sigma x combined statistical error + systematic margin.
+
+    Parameters
+    ----------
+    ours_sem : float
+        Our standard error of the mean over samples.
+    k_sigma : float
+        Multiple of the combined statistical error; must be > 0.
+    published_err : float, optional
+        Error the paper quotes (0: none quoted, or an exact result); must be >= 0.
+    systematic : float, optional
+        Systematic margin added as it is; must be >= 0.
+
+    Returns
+    -------
+    float
+        ``k_sigma * sqrt(ours_sem^2 + published_err^2) + systematic``.
+    """
     if k_sigma <= 0:
         raise ValueError(f"k_sigma must be > 0, got {k_sigma}")
     if systematic < 0 or published_err < 0:
@@ -67,7 +84,39 @@ def compare(quantity: str, key: str, published: float, ours: float, ours_sem: fl
     """One comparison row: a dict with the keys of :data:`COLUMNS` and of :data:`BUDGET`
     (module docstring). The tolerance's margin is ``rounding + systematic``;
     ``upper_bound``: the published value bounds ours from above; ``exact``: the row passes
-    only if ours equals the published value (e.g. an infinity), with tolerance 0."""
+    only if ours equals the published value (e.g. an infinity), with tolerance 0.
+
+    Parameters
+    ----------
+    quantity, key : str
+        Name of the compared quantity and of the row within it (e.g. ``"r/R=0.5000"``);
+        ``upper_bound`` appends :data:`UPPER_BOUND_NOTE` to the key.
+    published : float
+        Published (or exact) value.
+    ours : float
+        Our value; NaN (not computed) never passes.
+    ours_sem : float
+        Our standard error of the mean.
+    k_sigma : float
+        Multiple of the combined statistical error in the tolerance.
+    published_err : float, optional
+        Error the paper quotes (0 if none).
+    rounding : float, optional
+        Half a unit of the published value's last digit; part of the systematic margin.
+    systematic : float, optional
+        The rest of the systematic margin, stated by the caller.
+    upper_bound : bool, optional
+        Pass if ``ours - published <= tolerance`` (published value is a quality bound).
+    exact : bool, optional
+        Pass only if ``ours == published``; the tolerance is then 0.
+    reason_if_failed : str, optional
+        Reason identified should the row fail ("" for none), for comparison_notes.csv.
+
+    Returns
+    -------
+    dict
+        The row: keys of :data:`COLUMNS` then of :data:`BUDGET`.
+    """
     tol = tolerance(ours_sem, k_sigma=k_sigma, published_err=published_err,
                     systematic=rounding + systematic)
     if exact:
@@ -94,7 +143,22 @@ def checked_row(row: Mapping, *, k_sigma: float, reason_if_failed: str = "") -> 
     """A row compared elsewhere (the columns of :data:`COLUMNS`, e.g. a generator's
     validation csv), kept as it is, with the budget :func:`notes_frame` needs: no published
     error or rounding, and as systematic margin the part of the tolerance beyond
-    k_sigma x SEM."""
+    k_sigma x SEM.
+
+    Parameters
+    ----------
+    row : Mapping
+        A row with (at least) the keys of :data:`COLUMNS`; a non-finite ``ours_sem`` counts as 0.
+    k_sigma : float
+        The k_sigma the row's tolerance was built with.
+    reason_if_failed : str, optional
+        Reason identified should the row fail ("" for none).
+
+    Returns
+    -------
+    dict
+        The :data:`COLUMNS` of ``row`` plus the keys of :data:`BUDGET`.
+    """
     sem = float(row["ours_sem"]) if math.isfinite(row["ours_sem"]) else 0.0
     return {**{column: row[column] for column in COLUMNS}, "published_err": 0.0, "rounding": 0.0,
             "systematic": max(0.0, float(row["tolerance"]) - k_sigma * sem),

@@ -78,7 +78,31 @@ def overlapping_disks_s2_rows(
     s2: xr.Dataset, *, radius: float, phi2: float, image_shape, compare_r_max: float,
     k_sigma: float,
 ) -> list[dict]:
-    """One row per S2 bin with r <= compare_r_max (pixels)."""
+    """One row per S2 bin with r <= compare_r_max (pixels).
+
+    Parameters
+    ----------
+    s2 : xarray.Dataset
+        Sample-mean S2 of the void phase: variables ``S2``, ``S2_sem`` on coordinate ``r``
+        (bin mean distance, pixels), attributes ``r_max`` and ``bin_width`` (pixels).
+    radius : float
+        Disk radius R (pixels).
+    phi2 : float
+        Area fraction of the disks (phase 2).
+    image_shape : tuple of int
+        Shape of the images (pixels); with ``r_max`` and ``bin_width`` it rebuilds the binning,
+        which must match ``s2["r"]``.
+    compare_r_max : float
+        Largest bin distance compared (pixels).
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+
+    Returns
+    -------
+    list of dict
+        Comparison rows (:func:`randmedia.compare.compare`), keyed by r/R; systematic margin the
+        bin-labelling bias.
+    """
 
     def exact(r):
         return s2_void(r, radius, phi2, dim=2)
@@ -134,7 +158,27 @@ def construction_numbers(s2_by_phi2: dict) -> "pd.DataFrame":
 def overlapping_disks_chord_rows(chords: xr.Dataset, *, radius: float, phi2: float,
                                  compare_z_max: float, k_sigma: float) -> list[dict]:
     """L(z) of the void phase against Eq. (38) every R/2 up to ``compare_z_max``, and the
-    mean chord against Eq. (20), l_C = pi phi1 / s = pi R / (2 eta) with s of Eq. (34)."""
+    mean chord against Eq. (20), l_C = pi phi1 / s = pi R / (2 eta) with s of Eq. (34).
+
+    Parameters
+    ----------
+    chords : xarray.Dataset
+        Lineal-path data of the void phase: ``L``, ``L_sem`` on coordinate ``z`` (pixels) and
+        the per-sample mean chord lengths ``mean_chord_samples`` (pixels).
+    radius : float
+        Disk radius R (pixels).
+    phi2 : float
+        Area fraction of the disks.
+    compare_z_max : float
+        Largest z compared (pixels); the grid point nearest each multiple of R/2 is used.
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+
+    Returns
+    -------
+    list of dict
+        Comparison rows: L(z) keyed by z/R, then the mean chord l_C/R.
+    """
     z = chords["z"].values
     rows = []
     for target in np.arange(0.0, compare_z_max + 1e-9, radius / 2):
@@ -162,7 +206,23 @@ def overlapping_disks_chord_rows(chords: xr.Dataset, *, radius: float, phi2: flo
 def lineal_size_rows(fits: xr.Dataset, reference, *, k_sigma: float) -> list[dict]:
     """<R^2>/<R> of Eq. (30), averaged over phi2, against the quoted (0.94 +- 0.04) a; and the
     spread 0.04 against the standard deviation of <R^2>/<R> over the phi2 values (ddof = 1),
-    whose own standard error, std / sqrt(2 (n - 1)) for n values, is the row's SEM."""
+    whose own standard error, std / sqrt(2 (n - 1)) for n values, is the row's SEM.
+
+    Parameters
+    ----------
+    fits : xarray.Dataset
+        Lineal-path fits per phi2: ``R2_over_R`` and its error ``R2_over_R_err`` (units of a).
+    reference : pandas.DataFrame
+        Quoted numbers (columns ``quantity``, ``value``), with ``R2_over_R_mean`` and
+        ``R2_over_R_spread``.
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+
+    Returns
+    -------
+    list of dict
+        Two comparison rows: the spread over phi2, then the mean over phi2.
+    """
     quoted = reference.set_index("quantity")["value"]
     ratio = fits["R2_over_R"].values
     error = fits["R2_over_R_err"].values
@@ -238,7 +298,32 @@ def overlapping_disks_surface_rows(surface: xr.Dataset, *, radius: float, phi2: 
     only next to r = 0 and r = 2R.
 
     Reasons of failing F_ss bins: :data:`REASON_F_SS_SINGULARITY` within 2 ``singular_width``
-    of r = 2R, :data:`REASON_F_SS_PIXEL_STEPS` at r <= :data:`F_SS_PIXEL_STEP_RANGE`."""
+    of r = 2R, :data:`REASON_F_SS_PIXEL_STEPS` at r <= :data:`F_SS_PIXEL_STEP_RANGE`.
+
+    Parameters
+    ----------
+    surface : xarray.Dataset
+        Surface functions of the level sets: ``F_sv``, ``F_ss`` and their ``*_sem`` on
+        coordinate ``r`` (pixels), per-sample ``s_samples`` (1/pixel) and ``euler_samples``
+        (1/pixel^2); attributes ``supersample``, ``image_side``, ``r_max``, ``bin_width`` of the
+        sub-pixel binning.
+    radius : float
+        Disk radius R (pixels).
+    phi2 : float
+        Area fraction of the disks.
+    compare_r_max, r_min : float
+        Range of bin distances compared, r_min <= r <= compare_r_max (pixels).
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+    singular_width : float, optional
+        Half-width (pixels) of the range around r = 2R where F_ss bins are left out.
+
+    Returns
+    -------
+    list of dict
+        Comparison rows: F_sv and F_ss per bin (keyed by r/R), then s R (Eq. 34) and the
+        specific Euler characteristic chi/A R^2 against Mecke's formula.
+    """
     binning, m = _fine_binning(surface)
     h = 1.0 / m
     rows = []
@@ -297,7 +382,28 @@ def overlapping_disks_pore_rows(pores: xr.Dataset, *, radius: float, phi2: float
                                 k_sigma: float, F_min: float = 0.01) -> list[dict]:
     """F(delta) and P(delta) of the level sets of digitized overlapping disks against Eq. (37)
     every R/4 while the exact F >= F_min (P as the exact bin average (F(lo) - F(hi)) / width,
-    no labelling bias), and <delta> against the exact first moment (Eq. 18)."""
+    no labelling bias), and <delta> against the exact first moment (Eq. 18).
+
+    Parameters
+    ----------
+    pores : xarray.Dataset
+        Pore-size data of the level sets: ``F``, ``F_sem`` on coordinate ``delta`` (bin edges,
+        pixels), ``P``, ``P_sem`` (1/pixel) with bin centres ``delta_bin``, per-sample
+        ``mean_delta_samples`` (pixels), attribute ``delta_bin_width`` (pixels).
+    radius : float
+        Disk radius R (pixels).
+    phi2 : float
+        Area fraction of the disks.
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+    F_min : float, optional
+        Rows stop where the exact complementary CDF F falls below this value.
+
+    Returns
+    -------
+    list of dict
+        Comparison rows: F and P R keyed by delta/R, then <delta>/R.
+    """
     rows = []
     delta = pores["delta"].values
     exact_F = pore_size_complementary_cdf(delta, radius, phi2, dim=2)
@@ -331,7 +437,24 @@ def _quoted(reference) -> dict:
 def parameter_rows(reference, media: dict, overlapping_disks: dict, hard_disks_phi2: float) -> list[dict]:
     """The quoted parameters against the configured ones: a, l_c, L, each phi2, the number of
     constructions per phi2, the comparison volume fraction (overlapping and hard disks).
-    Tolerance 0: a row passes exactly when the config is the paper's."""
+    Tolerance 0: a row passes exactly when the config is the paper's.
+
+    Parameters
+    ----------
+    reference : pandas.DataFrame
+        Quoted numbers (columns ``quantity``, ``value``).
+    media : dict
+        Configured media: ``a``, ``lc``, ``L`` (pixels), ``n_samples`` and the list ``phi2``.
+    overlapping_disks : dict
+        Configuration of the overlapping-disk comparison, with its ``phi2``.
+    hard_disks_phi2 : float
+        Configured area fraction of the equilibrium hard disks.
+
+    Returns
+    -------
+    list of dict
+        Comparison rows with tolerance 0 (k_sigma 1, SEM 0); a missing configured phi2 is NaN.
+    """
     quoted = _quoted(reference)
     rows = []
     for name, ours in (("length_scale_a", media["a"]), ("cutoff_lc", media["lc"]),
@@ -361,7 +484,24 @@ def construction_rows(reference, s2_by_phi2: dict, *, k_sigma: float) -> list[di
     """Delta S2 "quite small as 0.6 ~ 2 x 10^-4" (Sec. IV): a quality bound of the
     construction, so the smallest and largest per-phi2 mean Delta S2 are compared with the
     quoted ends as upper bounds (passed if ours <= published + k_sigma x the SEM of that
-    phi2's mean), for both ranges of bins (docs/debye2020.md: which bins the paper means is not said)."""
+    phi2's mean), for both ranges of bins (docs/debye2020.md: which bins the paper means is not said).
+
+    Parameters
+    ----------
+    reference : pandas.DataFrame
+        Quoted numbers (columns ``quantity``, ``value``), with
+        ``mean_abs_S2_discrepancy_min`` and ``_max``.
+    s2_by_phi2 : dict
+        phi2 -> dataset of per-sample ``delta_S2`` (0 < r <= l_c) and ``delta_S2_full``
+        (0 < r < L/2).
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+
+    Returns
+    -------
+    list of dict
+        Four upper-bound rows: min and max over phi2, for each range of bins.
+    """
     quoted = _quoted(reference)
     rows = []
     for name, where, reason in (("delta_S2_full", "bins 0 < r < L/2", REASON_DELTA_S2_ALL_BINS),
@@ -392,7 +532,28 @@ def surface_pore_rows(reference, fits: xr.Dataset, *, a: float, k_sigma: float) 
     cubic and the Eq. (28) error range come twice: from the level-set distances (our
     estimator, validated on overlapping disks) and, as second-reading rows
     (:data:`PIXEL_CENTRE_READING`), from the pixel-centre distance transform -- the paper
-    does not say how it sampled P(delta) from pixels."""
+    does not say how it sampled P(delta) from pixels.
+
+    Parameters
+    ----------
+    reference : pandas.DataFrame
+        Quoted numbers (columns ``quantity``, ``value``).
+    fits : xarray.Dataset
+        Sec. V A-B fits per ``phi2`` (pixel units; the variables read here, e.g.
+        ``p1_coefficients``, ``p0_measured``, ``p2_free``, ``euler_slope``, ``eq28_rel_error``,
+        with their SEMs and margins) and the percolation attributes ``percolation_crossing``,
+        ``percolation_crossing_err``, ``percolation_bracket``.
+    a : float
+        Length scale a of the media (pixels); p0, p2 are compared in units of 1/a, the Euler
+        characteristic in units of 1/a^2.
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+
+    Returns
+    -------
+    list of dict
+        Comparison rows.
+    """
     quoted = _quoted(reference)
     rows = []
     coefficients = [float(v) for v in str(quoted["p1_coefficients"]).split(";")]
@@ -513,7 +674,26 @@ def surface_pore_numbers(fits: xr.Dataset) -> "pd.DataFrame":
 
 def level_set_numbers(system: str, surface: xr.Dataset, pores: xr.Dataset) -> "pd.DataFrame":
     """numbers.csv rows of one comparison model's level sets (Sec. VI): tuned sigma, s, <delta>,
-    the pixel-centre <delta> diagnostic, the topological Euler characteristic."""
+    the pixel-centre <delta> diagnostic, the topological Euler characteristic.
+
+    Parameters
+    ----------
+    system : str
+        Label of the comparison model, prefixed to every quantity.
+    surface : xarray.Dataset
+        Surface-function dataset of the model's level sets: attributes ``phi2``, ``sigma``,
+        ``s_exact``, ``length_scale`` (particle radius, pixels), ``model``
+        (``"overlapping_disks"``, ``"hard_disks"`` or other); ``s_samples``, ``euler_samples``.
+    pores : xarray.Dataset
+        Pore-size dataset with ``mean_delta_samples`` and ``mean_delta_pixel_centres_samples``
+        (pixels).
+
+    Returns
+    -------
+    pandas.DataFrame
+        numbers.csv rows (columns quantity, phi2, mean, sem, min, max, n_samples, unit, where),
+        ending with the theoretical <delta> (NaN for a model without one).
+    """
     import pandas as pd
 
     phi2 = float(surface.attrs["phi2"])

@@ -70,7 +70,23 @@ def pooled_contact(datasets: Sequence, settings: MCSettings) -> dict:
 
 
 def pressure_row(frame: pd.DataFrame, quantity: str, key: str, *, k_sigma: float) -> dict:
-    """Mean per-sample contact-value pressure against the EOS value (module docstring)."""
+    """Mean per-sample contact-value pressure against the EOS value (module docstring).
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        Diagnostics (:func:`diagnostics_frame`) with ``reduced_pressure`` per sample and
+        ``eos_reduced_pressure`` (first row used).
+    quantity, key : str
+        Row labels.
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+
+    Returns
+    -------
+    dict
+        One comparison row, systematic margin :data:`PRESSURE_MARGIN` x the EOS value.
+    """
     eos = float(frame["eos_reduced_pressure"].iloc[0])
     z = frame["reduced_pressure"].to_numpy(float)
     return compare(quantity, key, eos, float(z.mean()), float(standard_error(z)),
@@ -78,7 +94,23 @@ def pressure_row(frame: pd.DataFrame, quantity: str, key: str, *, k_sigma: float
 
 
 def digitized_fraction_row(frame: pd.DataFrame, quantity: str, key: str, *, k_sigma: float) -> dict:
-    """Mean digitized disk fraction against its exact expectation N pi R^2 / L^2."""
+    """Mean digitized disk fraction against its exact expectation N pi R^2 / L^2.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        Diagnostics (:func:`diagnostics_frame`) with ``phi2_digitized`` per sample and
+        ``phi2_disks`` = N pi R^2 / L^2 (first row used).
+    quantity, key : str
+        Row labels.
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+
+    Returns
+    -------
+    dict
+        One comparison row, no systematic margin.
+    """
     values = frame["phi2_digitized"].to_numpy(float)
     return compare(quantity, key, float(frame["phi2_disks"].iloc[0]), float(values.mean()),
                    float(standard_error(values)), k_sigma=k_sigma)
@@ -94,6 +126,22 @@ def density_modes(positions: np.ndarray, box_lengths, k_over_d: float | None = N
     the d unit vectors (the long-wavelength density fluctuations behind S(0)); else the
     3 d axis wavevectors with |k| D closest to ``k_over_d`` and its two neighbours (e.g.
     7, near the first peak of S(k) of the dense liquid), positions in units of D.
+
+    Parameters
+    ----------
+    positions : ndarray, shape (N, d)
+        Particle positions (units of D when ``k_over_d`` is given; same units as
+        ``box_lengths``).
+    box_lengths : array_like, shape (d,)
+        Edge lengths of the periodic box.
+    k_over_d : float or None, optional
+        Target |k| D, or None for the smallest wavevectors.
+
+    Returns
+    -------
+    ndarray of complex
+        rho_k, one per wavevector: shape (d,) for None, else up to 3 d (axis multiples below 1
+        are skipped).
     """
     positions = np.asarray(positions, dtype=float)
     box_lengths = np.asarray(box_lengths, dtype=float)
@@ -140,7 +188,26 @@ def decorrelation_rows(datasets: Sequence, quantity: str, *, k_sigma: float,
                        peak_k_over_d: float) -> list[dict]:
     """Comparison rows: lag-one correlation of density modes between consecutive samples of
     a chain (expected 0 for independent samples, the "published" value) at the smallest
-    wavevectors and near the first peak of S(k). Positions are converted to units of D."""
+    wavevectors and near the first peak of S(k). Positions are converted to units of D.
+
+    Parameters
+    ----------
+    datasets : sequence of xarray.Dataset
+        Sample files with ``position``, ``box`` and attributes ``chain``, ``sample``,
+        ``diameter``; ordered here by (chain, sample).
+    quantity : str
+        Quantity label of the rows.
+    k_sigma : float
+        Multiple of the standard error in the tolerance.
+    peak_k_over_d : float
+        k D near the first peak of S(k) (passed as ``k_over_d`` to :func:`density_modes`).
+
+    Returns
+    -------
+    list of dict
+        Two comparison rows (k = 2 pi / L, then k D ~ ``peak_k_over_d``); the key gives the
+        number of sample pairs.
+    """
     by_chain: dict[int, list] = {}
     for ds in sorted(datasets, key=lambda d: (int(d.attrs["chain"]), int(d.attrs["sample"]))):
         diameter = float(ds.attrs["diameter"])

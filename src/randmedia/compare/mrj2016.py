@@ -85,7 +85,25 @@ def _mean_sem(values):
 
 
 def table_correlation(inputs, params, number: int) -> pd.DataFrame:
-    """Table II (equilibrium) or III (MRJ): S2, F_sv/s, F_ss/s^2, E_V at the paper's r/D."""
+    """Table II (equilibrium) or III (MRJ): S2, F_sv/s, F_ss/s^2, E_V at the paper's r/D.
+
+    Parameters
+    ----------
+    inputs : Mapping[str, path]
+        Input files: descriptor files named ``{kind}_{system}`` (``correlation_*`` and
+        ``points_*`` are read) and ``reference``, the published table's CSV (its ``r_over_D``
+        column gives the rows).
+    params : dict
+        Rule parameters; not used here (signature of :data:`TABLES`).
+    number : int
+        Table number, 2 or 3 (:data:`TABLE_SYSTEMS`).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per r/D: ``S2``, ``Fsv_over_s``, ``Fss_over_s2``, ``EV`` with ``*_sem``; the
+        r = inf row from phi (E_V NaN); NaN where r is off our grid.
+    """
     system = TABLE_SYSTEMS[number]
     corr = _load(inputs, "correlation", system)
     pts = _load(inputs, "points", system)
@@ -115,7 +133,25 @@ def table_spectral(inputs, params, number: int) -> pd.DataFrame:
     (spectral.table_binnings; config mrj2016.tables.spectral_binning: grid_spacing, bins of
     width 2 pi / L centred on the shells, which reproduces all of Table IV, docs/mrj2016.md)
     where it applies to every row, else our bins of table_bin_width (column ``binning``
-    says which); every reading is kept as columns chiV_binning_{name}_over_D3 (+ SEM)."""
+    says which); every reading is kept as columns chiV_binning_{name}_over_D3 (+ SEM).
+
+    Parameters
+    ----------
+    inputs : Mapping[str, path]
+        Input files: ``spectral_{system}`` and ``reference``, the published table's CSV (its
+        ``kD`` column must equal the dataset's ``k_table``).
+    params : dict
+        Rule parameters; ``spectral_binning`` names the chosen reading (default
+        ``"bin_width"``).
+    number : int
+        Table number, 4 or 5 (:data:`TABLE_SYSTEMS`).
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per kD: ``kD``, ``bin_centre_kD``, ``chiV_over_D3``, ``sem_over_D3``,
+        ``wavevectors``, ``bin_width_over_D``, ``binning`` and the per-reading columns.
+    """
     system = TABLE_SYSTEMS[number]
     spec = _load(inputs, "spectral", system)
     reference = read_reference(inputs["reference"], ["kD"])
@@ -257,7 +293,23 @@ class Rows:
             rounding=0.0, systematic=0.0, reason_if_failed="", exact_match=False):
         """A missing SEM (NaN, e.g. one sample or a configured value) adds nothing to the
         tolerance; the row keeps it as NaN. ``exact_match``: e.g. F_ss(0) = inf passes only
-        if ours is the same infinity."""
+        if ours is the same infinity.
+
+        Parameters
+        ----------
+        quantity, key : str
+            Row labels.
+        published, ours : float
+            Published and our value.
+        ours_sem : float, optional
+            Our SEM; NaN (default) adds nothing to the tolerance.
+        published_err, rounding, systematic : float, optional
+            Error budget (:func:`randmedia.compare.compare`).
+        reason_if_failed : str, optional
+            Reason identified should the row fail.
+        exact_match : bool, optional
+            Passed as ``exact`` to :func:`randmedia.compare.compare`.
+        """
         sem = 0.0 if not np.isfinite(ours_sem) else float(ours_sem)
         row = compare(quantity, key, published, ours, sem, k_sigma=self.k_sigma,
                       published_err=published_err, rounding=rounding, systematic=systematic,
@@ -354,7 +406,27 @@ ZERO_NEIGHBOURHOOD = 0.35
 def gaussian_radius(R, skewness, kurtosis, throws, *, threshold=GAUSSIAN_THRESHOLD,
                     min_windows=GAUSSIAN_MIN_WINDOWS) -> float:
     """Smallest R from which on |skewness| and |excess kurtosis| of N(R) stay <= threshold
-    (radii with at least ``min_windows`` pooled windows); NaN if none."""
+    (radii with at least ``min_windows`` pooled windows); NaN if none.
+
+    Parameters
+    ----------
+    R : array_like
+        Window radii (increasing; units of D).
+    skewness, kurtosis : array_like
+        Skewness and excess kurtosis of N(R) per radius.
+    throws : array_like
+        Number of pooled windows per radius.
+    threshold : float, optional
+        Bound on |skewness| and |excess kurtosis|.
+    min_windows : int, optional
+        Radii with fewer pooled windows are ignored.
+
+    Returns
+    -------
+    float
+        The radius (units of ``R``); NaN if the largest used radius fails the criterion or no
+        radius is used.
+    """
     R, skewness, kurtosis, throws = (np.asarray(a, dtype=float) for a in (R, skewness, kurtosis, throws))
     use = throws >= min_windows
     ok = (np.abs(skewness) <= threshold) & (np.abs(kurtosis) <= threshold)
@@ -556,7 +628,27 @@ def _validation_rows(rows: Rows, inputs, params):
 def comparison(inputs, tables, params, checked_rows: pd.DataFrame | None = None):
     """(comparison frame, notes frame) of every table cell, quoted number and validation row;
     ``checked_rows`` (already compared, e.g. the equilibrium liquid's pressure against its
-    equation of state) are appended as they are."""
+    equation of state) are appended as they are.
+
+    Parameters
+    ----------
+    inputs : Mapping[str, path]
+        Merged descriptor files named ``{kind}_{system}``.
+    tables : list of path
+        Our table CSVs, whose names end in ``table{n}.csv``; a Table II-V without ours gets
+        published cells with NaN ours.
+    params : dict
+        Rule parameters: ``k_sigma``, ``overlapping_phi``, ``windows["phi_B"]``,
+        ``spectral["bin_width"]``, ``n_samples`` (system -> count).
+    checked_rows : pandas.DataFrame, optional
+        Rows compared elsewhere, with the columns of :data:`randmedia.compare.COLUMNS`.
+
+    Returns
+    -------
+    tuple of pandas.DataFrame
+        (comparison frame, notes frame). The reference CSVs are read from
+        ``config/reference/`` relative to the working directory.
+    """
     rows = Rows(params["k_sigma"])
     references = {2: "config/reference/mrj2016_table2_equilibrium.csv",
                   3: "config/reference/mrj2016_table3_mrj.csv",

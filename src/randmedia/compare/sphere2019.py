@@ -145,7 +145,22 @@ def table1(reference: pd.DataFrame, fits: xr.Dataset) -> pd.DataFrame:
 def comparison_rows(table: pd.DataFrame, *, k_sigma: float,
                     rounding_margin: float = ROUNDING_MARGIN) -> list[dict]:
     """One row per Table I entry and reading (module docstring): tolerance k_sigma *
-    (jackknife error) + the row's measured window systematic + ``rounding_margin``."""
+    (jackknife error) + the row's measured window systematic + ``rounding_margin``.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        Table I as built by :func:`table1`.
+    k_sigma : float
+        Multiple of the jackknife error in the tolerance.
+    rounding_margin : float, optional
+        Half the last published digit of the exponents.
+
+    Returns
+    -------
+    list of dict
+        Comparison rows with their budget and failure reason.
+    """
     rows = []
     for _, row in table.iterrows():
         if row["pattern"] == "poisson":
@@ -173,7 +188,22 @@ def comparison_rows(table: pd.DataFrame, *, k_sigma: float,
 
 def comparison(table: pd.DataFrame, *, k_sigma: float,
                rounding_margin: float = ROUNDING_MARGIN) -> tuple[pd.DataFrame, pd.DataFrame]:
-    """(comparison frame, notes frame) of :func:`comparison_rows`."""
+    """(comparison frame, notes frame) of :func:`comparison_rows`.
+
+    Parameters
+    ----------
+    table : pandas.DataFrame
+        Table I as built by :func:`table1`.
+    k_sigma : float
+        Multiple of the jackknife error in the tolerance.
+    rounding_margin : float, optional
+        Half the last published digit of the exponents.
+
+    Returns
+    -------
+    tuple of pandas.DataFrame
+        (comparison frame, notes frame).
+    """
     rows = comparison_rows(table, k_sigma=k_sigma, rounding_margin=rounding_margin)
     return comparison_frame(rows), notes_frame(rows)
 
