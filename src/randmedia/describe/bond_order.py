@@ -105,6 +105,25 @@ def global_ql(positions, box, cutoff=None, *, l: int = 6, diameter: float = 1.0)
     """Global Steinhardt Q_l over every bond shorter than ``cutoff`` (default 1.4 * diameter).
 
     Returns NaN when there is no bond at all.
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Particle centres, in the units of ``box``.
+    box : array_like, shape (3, 3), or Cell
+        Periodic cell; columns (``box[:, k]``) are the lattice vectors (any periodic cell).
+    cutoff : float, optional
+        Bond length cutoff r_c; None: 1.4 x ``diameter``. Must not exceed half the cell's
+        smallest width.
+    l : int, optional
+        Degree l of the spherical harmonics.
+    diameter : float, optional
+        Particle diameter D (units of ``box``); sets the default cutoff.
+
+    Returns
+    -------
+    float
+        Q_l of all bonds.
     """
     cell = _cell(box)
     cutoff = _resolve_cutoff(cutoff, diameter)
@@ -121,6 +140,23 @@ def global_q6(positions, box, cutoff=None, *, diameter: float = 1.0) -> float:
     ``positions`` (n, 3) in the units of ``box`` (columns = lattice vectors, any periodic
     cell); ``cutoff`` defaults to 1.4 * ``diameter`` and must not exceed half the cell's
     smallest width.
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Particle centres, in the units of ``box``.
+    box : array_like, shape (3, 3), or Cell
+        Periodic cell; columns (``box[:, k]``) are the lattice vectors (any periodic cell).
+    cutoff : float, optional
+        Bond length cutoff r_c; None: 1.4 x ``diameter``. Must not exceed half the cell's
+        smallest width.
+    diameter : float, optional
+        Particle diameter D (units of ``box``); sets the default cutoff.
+
+    Returns
+    -------
+    float
+        Q_6 of all bonds (NaN without bonds).
     """
     return global_ql(positions, box, cutoff, l=6, diameter=diameter)
 
@@ -130,6 +166,29 @@ def local_qlm(positions, box, cutoff=None, *, l: int = 6, diameter: float = 1.0)
 
     Returns (qlm, n_neighbours, i, j): qlm has shape (n, l + 1), zero for particles
     without neighbours; (i, j) are the bonded pairs (i < j).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Particle centres, in the units of ``box``.
+    box : array_like, shape (3, 3), or Cell
+        Periodic cell; columns (``box[:, k]``) are the lattice vectors (any periodic cell).
+    cutoff : float, optional
+        Bond length cutoff r_c; None: 1.4 x ``diameter``. Must not exceed half the cell's
+        smallest width.
+    l : int, optional
+        Degree l of the spherical harmonics.
+    diameter : float, optional
+        Particle diameter D (units of ``box``); sets the default cutoff.
+
+    Returns
+    -------
+    qlm : ndarray of complex, shape (n, l + 1)
+        q_lm(i) for m = 0..l.
+    n_neighbours : ndarray of int, shape (n,)
+        Neighbours of each particle.
+    i, j : ndarray of int, shape (n_bonds,)
+        The bonded pairs, i < j.
     """
     cell = _cell(box)
     cutoff = _resolve_cutoff(cutoff, diameter)
@@ -151,7 +210,25 @@ def local_qlm(positions, box, cutoff=None, *, l: int = 6, diameter: float = 1.0)
 
 
 def local_q6(positions, box, cutoff=None, *, diameter: float = 1.0) -> np.ndarray:
-    """Per-particle q6(i) (NaN for a particle without neighbours)."""
+    """Per-particle q6(i) (NaN for a particle without neighbours).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Particle centres, in the units of ``box``.
+    box : array_like, shape (3, 3), or Cell
+        Periodic cell; columns (``box[:, k]``) are the lattice vectors (any periodic cell).
+    cutoff : float, optional
+        Bond length cutoff r_c; None: 1.4 x ``diameter``. Must not exceed half the cell's
+        smallest width.
+    diameter : float, optional
+        Particle diameter D (units of ``box``); sets the default cutoff.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+        q6(i) per particle.
+    """
     qlm, count, _, _ = local_qlm(positions, box, cutoff, l=6, diameter=diameter)
     q = _invariant(qlm, 6)
     q[count == 0] = np.nan
@@ -161,7 +238,29 @@ def local_q6(positions, box, cutoff=None, *, diameter: float = 1.0) -> np.ndarra
 def crystal_like(positions, box, cutoff=None, *, diameter: float = 1.0,
                  bond_threshold: float = DEFAULT_BOND_THRESHOLD,
                  min_connections: int = DEFAULT_MIN_CONNECTIONS) -> np.ndarray:
-    """Boolean mask of crystal-like particles (ten Wolde q6 . q6 criterion, module docstring)."""
+    """Boolean mask of crystal-like particles (ten Wolde q6 . q6 criterion, module docstring).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Particle centres, in the units of ``box``.
+    box : array_like, shape (3, 3), or Cell
+        Periodic cell; columns (``box[:, k]``) are the lattice vectors (any periodic cell).
+    cutoff : float, optional
+        Bond length cutoff r_c; None: 1.4 x ``diameter``. Must not exceed half the cell's
+        smallest width.
+    diameter : float, optional
+        Particle diameter D (units of ``box``); sets the default cutoff.
+    bond_threshold : float, optional
+        A neighbour pair is connected when d_6 > this value (in [-1, 1]).
+    min_connections : int, optional
+        Connected neighbours a crystal-like particle needs (>= 1).
+
+    Returns
+    -------
+    ndarray of bool, shape (n,)
+        True for crystal-like particles.
+    """
     if not -1.0 <= bond_threshold <= 1.0:
         raise ValueError(f"bond_threshold must lie in [-1, 1], got {bond_threshold}")
     if min_connections < 1:
@@ -183,7 +282,29 @@ def crystal_like(positions, box, cutoff=None, *, diameter: float = 1.0,
 def crystalline_fraction(positions, box, cutoff=None, *, diameter: float = 1.0,
                          bond_threshold: float = DEFAULT_BOND_THRESHOLD,
                          min_connections: int = DEFAULT_MIN_CONNECTIONS) -> float:
-    """Fraction of crystal-like particles (1 for perfect fcc/hcp/bcc, ~1e-3 for the liquid)."""
+    """Fraction of crystal-like particles (1 for perfect fcc/hcp/bcc, ~1e-3 for the liquid).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Particle centres, in the units of ``box``.
+    box : array_like, shape (3, 3), or Cell
+        Periodic cell; columns (``box[:, k]``) are the lattice vectors (any periodic cell).
+    cutoff : float, optional
+        Bond length cutoff r_c; None: 1.4 x ``diameter``. Must not exceed half the cell's
+        smallest width.
+    diameter : float, optional
+        Particle diameter D (units of ``box``); sets the default cutoff.
+    bond_threshold : float, optional
+        A neighbour pair is connected when d_6 > this value (in [-1, 1]).
+    min_connections : int, optional
+        Connected neighbours a crystal-like particle needs (>= 1).
+
+    Returns
+    -------
+    float
+        Fraction of crystal-like particles (NaN for no particles).
+    """
     mask = crystal_like(positions, box, cutoff, diameter=diameter, bond_threshold=bond_threshold,
                         min_connections=min_connections)
     return float(mask.mean()) if len(mask) else float("nan")
@@ -194,7 +315,24 @@ def crystalline_fraction(positions, box, cutoff=None, *, diameter: float = 1.0,
 
 def cubic_lattice(kind: str, cells: int, nearest_distance: float = 1.0):
     """Positions and box of an fcc, bcc or sc lattice of ``cells``^3 cubic unit cells,
-    scaled so that nearest neighbours are ``nearest_distance`` apart (validation cases)."""
+    scaled so that nearest neighbours are ``nearest_distance`` apart (validation cases).
+
+    Parameters
+    ----------
+    kind : {"fcc", "bcc", "sc"}
+        Lattice.
+    cells : int
+        Cubic unit cells per edge (>= 1).
+    nearest_distance : float, optional
+        Nearest-neighbour distance.
+
+    Returns
+    -------
+    positions : ndarray, shape (n_basis * cells^3, 3)
+        Lattice sites (n_basis = 4, 2, 1 for fcc, bcc, sc).
+    box : ndarray, shape (3, 3)
+        Cubic periodic cell, diagonal = cells x lattice constant.
+    """
     basis = {
         "sc": [[0, 0, 0]],
         "bcc": [[0, 0, 0], [0.5, 0.5, 0.5]],

@@ -52,7 +52,21 @@ def bilinear_stencil(fx, fy, ny, nx):
     """The four periodic grid nodes around the point (fx, fy) in node units (node (i, j) at
     (j, i)) and its fractions past the lower ones: (i0, i1, j0, j1, tx, ty); the bilinear
     weights are (1 - tx)(1 - ty), tx (1 - ty), (1 - tx) ty, tx ty. Used to read a field at
-    a point (:func:`_inside`) and to deposit onto the grid (``surface._deposit``)."""
+    a point (:func:`_inside`) and to deposit onto the grid (``surface._deposit``).
+
+    Parameters
+    ----------
+    fx, fy : float
+        Point in node units (x along columns, y along rows).
+    ny, nx : int
+        Grid shape (rows, columns); indices wrap periodically.
+
+    Returns
+    -------
+    tuple
+        (i0, i1, j0, j1, tx, ty): the periodic row and column indices of the four nodes and
+        the fractions tx, ty in [0, 1).
+    """
     j0 = int(math.floor(fx))
     i0 = int(math.floor(fy))
     tx = fx - j0
@@ -127,7 +141,26 @@ def smoothed_level_set(image: np.ndarray, phase: int, sigma: float,
     bilinear interpolation of the field exceeds it, which is what the lines sample -- has
     the phase's volume fraction (Ma-Torquato). The area is measured on a
     ``supersample``^2 sub-pixel grid; keeping the *count of pixel centres* instead
-    biases the level set's area by about +0.4 % on overlapping disks."""
+    biases the level set's area by about +0.4 % on overlapping disks.
+
+    Parameters
+    ----------
+    image : ndarray, shape (ny, nx)
+        Periodic 2D image of phase labels.
+    phase : int
+        Label of the phase.
+    sigma : float
+        Gaussian filter width (pixels); <= 0: no filter, threshold 1/2.
+    supersample : int, optional
+        Sub-pixels per pixel along each axis for the area measurement.
+
+    Returns
+    -------
+    field : ndarray, shape (ny, nx)
+        Filtered indicator at the pixel centres.
+    threshold : float
+        Level of the level set.
+    """
     level_set = LevelSet.build(image, phase, sigma, supersample)
     return level_set.field, level_set.threshold
 
@@ -168,6 +201,26 @@ class LevelSet:
     @classmethod
     def build(cls, image: np.ndarray, phase: int, sigma: float, supersample: int = 4,
               model: str = "bilinear") -> "LevelSet":
+        """Build the level-set medium of ``image`` (class docstring).
+
+        Parameters
+        ----------
+        image : ndarray, shape (ny, nx)
+            Periodic 2D image of phase labels.
+        phase : int
+            Label of the phase.
+        sigma : float
+            Gaussian filter width (pixels); <= 0: no filter and threshold 1/2.
+        supersample : int, optional
+            Sub-pixels per pixel along each axis (>= 1).
+        model : {"bilinear", "pixels"}, optional
+            How the pixel image becomes a continuous field (:data:`LEVEL_SET_MODELS`).
+
+        Returns
+        -------
+        LevelSet
+            ``fine`` of shape (ny * supersample, nx * supersample); ``field`` None for ``"pixels"``.
+        """
         from scipy.ndimage import gaussian_filter
 
         if supersample < 1:
@@ -229,7 +282,39 @@ class LevelSet:
 def sample_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *,
                   n_directions: int = 32, lines_per_direction: int = 8,
                   line_length: float | None = None, step: float = 0.1, sigma: float = 0.5):
-    """Runs of ``phase`` along random lines: (lengths, complete flags, line length T, n lines)."""
+    """Runs of ``phase`` along random lines: (lengths, complete flags, line length T, n lines).
+
+    Parameters
+    ----------
+    image : ndarray, shape (ny, nx)
+        Periodic 2D image of phase labels.
+    phase : int
+        Label of the phase.
+    rng : numpy.random.Generator
+        Source of the direction offset and line origins.
+    n_directions : int, optional
+        Stratified directions in [0, pi).
+    lines_per_direction : int, optional
+        Lines per direction, each from a random origin.
+    line_length : float, optional
+        Line length T (pixels); None: 4 x the longer image side. Rounded down to a multiple of
+        ``step``.
+    step : float, optional
+        Step along a line (pixels).
+    sigma : float, optional
+        Gaussian width of the level set (pixels; :func:`smoothed_level_set`).
+
+    Returns
+    -------
+    lengths : ndarray
+        Run lengths (pixels), all lines together.
+    complete : ndarray of bool
+        True for runs with both ends on the interface.
+    line_length : float
+        T actually used (pixels).
+    n_lines : int
+        Number of lines.
+    """
     image = np.ascontiguousarray(image)
     if image.ndim != 2:
         raise ValueError(f"expected a 2D image, got shape {image.shape}")
@@ -257,7 +342,24 @@ def sample_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *,
 
 
 def lineal_path_from_runs(runs: np.ndarray, line_length: float, n_lines: int, z: np.ndarray):
-    """L(z) = sum_k max(0, l_k - z) / (n_lines (T - z)) for every z (all runs, cut ones too)."""
+    """L(z) = sum_k max(0, l_k - z) / (n_lines (T - z)) for every z (all runs, cut ones too).
+
+    Parameters
+    ----------
+    runs : ndarray
+        Run lengths of the phase (pixels), from :func:`sample_chords`.
+    line_length : float
+        Line length T (pixels).
+    n_lines : int
+        Number of lines the runs come from.
+    z : array_like
+        Segment lengths (pixels), each < T.
+
+    Returns
+    -------
+    ndarray
+        L(z), same shape as ``z``.
+    """
     z = np.asarray(z, dtype=float)
     if np.any(z >= line_length):
         raise ValueError("z must be shorter than the sampling lines")
@@ -269,7 +371,27 @@ def lineal_path_from_runs(runs: np.ndarray, line_length: float, n_lines: int, z:
 
 
 def chord_density_from_runs(runs, complete, line_length: float, edges: np.ndarray):
-    """p(z) on bins ``edges`` from complete chords, weighted T/(T - l); and the mean chord length."""
+    """p(z) on bins ``edges`` from complete chords, weighted T/(T - l); and the mean chord length.
+
+    Parameters
+    ----------
+    runs : ndarray
+        Run lengths (pixels), from :func:`sample_chords`.
+    complete : ndarray of bool
+        Which runs are complete chords.
+    line_length : float
+        Line length T (pixels).
+    edges : ndarray
+        Bin edges of chord length (pixels).
+
+    Returns
+    -------
+    density : ndarray, shape (len(edges) - 1,)
+        p(z) per bin (1/pixel), normalized over all complete chords (also those outside the
+        bins).
+    mean_chord : float
+        Weighted mean chord length (pixels).
+    """
     chords = runs[complete]
     weights = line_length / (line_length - chords)
     hist, _ = np.histogram(chords, bins=edges, weights=weights)
@@ -281,7 +403,31 @@ def chord_density_from_runs(runs, complete, line_length: float, edges: np.ndarra
 
 def lineal_path_and_chords(images, phase: int, rng: np.random.Generator, *, z_max: float,
                            dz: float = 0.5, chord_bin: float = 1.0, **sampling) -> xr.Dataset:
-    """L(z) and p(z) of ``phase`` for a stack of images, per sample, with mean and SEM."""
+    """L(z) and p(z) of ``phase`` for a stack of images, per sample, with mean and SEM.
+
+    Parameters
+    ----------
+    images : array_like, shape (n_samples, ny, nx)
+        Periodic 2D images of phase labels.
+    phase : int
+        Label of the phase.
+    rng : numpy.random.Generator
+        Passed to :func:`sample_chords`.
+    z_max : float
+        Largest z of L(z) and upper end of the chord bins (pixels).
+    dz : float, optional
+        Step of the z grid (pixels).
+    chord_bin : float, optional
+        Width of the chord-length bins (pixels).
+    **sampling
+        Keyword arguments of :func:`sample_chords` (directions, lines, step, sigma, ...).
+
+    Returns
+    -------
+    xarray.Dataset
+        ``L_samples``, ``L``, ``L_sem`` on ``z``; ``p_samples``, ``p``, ``p_sem`` on
+        ``z_chord`` (bin centres); ``p_from_L`` (Eq. 19); ``mean_chord_samples`` (pixels).
+    """
     images = np.asarray(images)
     if images.ndim != 3:
         raise ValueError(f"expected images of shape (n_samples, ny, nx), got {images.shape}")

@@ -81,7 +81,24 @@ class ContactNetwork:
 
 def contact_network(positions, box, diameter: float = 1.0,
                     gap_tolerance: float = 1e-9) -> ContactNetwork:
-    """Every pair whose gap (distance - D) is below ``gap_tolerance`` (units of D x D)."""
+    """Every pair whose gap (distance - D) is below ``gap_tolerance`` (units of D x D).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, d)
+        Sphere centres, in the units of ``box``.
+    box : array_like, shape (d, d)
+        Periodic cell; columns are the lattice vectors.
+    diameter : float, optional
+        Sphere diameter D.
+    gap_tolerance : float, optional
+        Contact threshold as a fraction of D, in (0, 0.1): contact when distance < D (1 + tol).
+
+    Returns
+    -------
+    ContactNetwork
+        Contacting pairs; ``gap`` and ``gap_tolerance`` there are in the units of ``box``.
+    """
     positions = np.asarray(positions, dtype=float)
     if not 0 < gap_tolerance < 0.1:
         raise ValueError(f"gap_tolerance must lie in (0, 0.1) D, got {gap_tolerance}")
@@ -94,7 +111,26 @@ def contact_network(positions, box, diameter: float = 1.0,
 
 def gap_histogram(positions, box, diameter: float = 1.0, decades=(-16, -1)):
     """Counts of pair gaps per decade, log10(gap/D) in [k, k+1) for k in decades (plus
-    gaps below the first decade in the first bin): shows the contact / non-contact gap."""
+    gaps below the first decade in the first bin): shows the contact / non-contact gap.
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, d)
+        Sphere centres, in the units of ``box``.
+    box : array_like, shape (d, d)
+        Periodic cell; columns are the lattice vectors.
+    diameter : float, optional
+        Sphere diameter D.
+    decades : tuple of int, optional
+        (first, last) exponent of the gap range; pairs with gap / D <= 10^last are counted.
+
+    Returns
+    -------
+    decade : ndarray of int
+        Lower exponent k of each bin.
+    counts : ndarray of int
+        Pairs with log10(gap / D) in [k, k + 1) (the last bin also holds gap = 10^last D).
+    """
     cell = Cell(box)
     _, _, _, distance = pairs_within(cell, np.asarray(positions, dtype=float),
                                      diameter * (1 + 10.0 ** decades[1]))
@@ -159,7 +195,22 @@ def isostatic_bound(n_backbone: int, dim: int) -> int:
 
 
 def isostatic_excess(n_contacts: int, n_backbone: int, dim: int) -> int:
-    """M - [d (N_b - 1) + d (d + 1) / 2]: 0 for an exactly isostatic backbone."""
+    """M - [d (N_b - 1) + d (d + 1) / 2]: 0 for an exactly isostatic backbone.
+
+    Parameters
+    ----------
+    n_contacts : int
+        Backbone contacts M.
+    n_backbone : int
+        Non-rattler spheres N_b.
+    dim : int
+        Dimension d.
+
+    Returns
+    -------
+    int
+        M minus the isostatic bound (:func:`isostatic_bound`).
+    """
     return int(n_contacts) - isostatic_bound(n_backbone, dim)
 
 
@@ -245,6 +296,35 @@ def analyse(positions, box, diameter: float = 1.0, *, gap_tolerance: float = 1e-
     backbone contact carries a force > ``force_tolerance`` x the mean force, and
     lambda_min / lambda_max of B^T B > ``rank_tolerance`` (and, with ``load_test``,
     no random load moves anything by more than ``motion_tolerance``).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, d)
+        Sphere centres, in the units of ``box``.
+    box : array_like, shape (d, d)
+        Periodic cell; columns are the lattice vectors.
+    diameter : float, optional
+        Sphere diameter D.
+    gap_tolerance : float, optional
+        Contact threshold as a fraction of D (:func:`contact_network`).
+    rank_tolerance : float, optional
+        Lower bound on lambda_min / lambda_max of B^T B.
+    force_tolerance : float, optional
+        Every backbone force must exceed this fraction of the mean force.
+    motion_tolerance : float, optional
+        Bound on -min Tr epsilon and on the load-test motion.
+    load_test : bool, optional
+        Also run Donev's random-load LPs.
+    n_loads : int, optional
+        Random loads of the load test (each maximized and minimized).
+    seed : int, optional
+        Seed of the random loads.
+
+    Returns
+    -------
+    JammingAnalysis
+        Contacts, rattlers, forces per unit pressure and the test's outcome; fewer than 2
+        backbone spheres: not jammed.
     """
     import scipy.sparse as sp
 

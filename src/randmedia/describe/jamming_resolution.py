@@ -29,7 +29,30 @@ def certified_gap_tolerance(positions, box, diameter: float = 1.0, *,
     (module docstring), NaN if none; ``analyse_options`` (rank, force and motion
     tolerances) are passed on unchanged. ``first_rung``: the first m tried (1 when the
     caller already knows the test fails at ``gap_tolerance``, e.g. from the packing's
-    stored ``jammed`` attribute)."""
+    stored ``jammed`` attribute).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, d)
+        Sphere centres, in the units of ``box``.
+    box : array_like, shape (d, d)
+        Periodic cell; columns are the lattice vectors.
+    diameter : float, optional
+        Sphere diameter D.
+    gap_tolerance : float, optional
+        First rung of the ladder, fraction of D (> 0).
+    max_tolerance : float, optional
+        Largest tolerance tried, fraction of D (< 0.1).
+    first_rung : int, optional
+        First exponent m tried.
+    **analyse_options
+        Further keyword arguments of :func:`~randmedia.describe.jamming.analyse`.
+
+    Returns
+    -------
+    float
+        The certified gap tolerance (fraction of D), NaN if none up to ``max_tolerance``.
+    """
     if not 0 < gap_tolerance <= max_tolerance < 0.1:
         raise ValueError(f"need 0 < gap_tolerance ({gap_tolerance}) <= max_tolerance "
                          f"({max_tolerance}) < 0.1 D")
