@@ -114,7 +114,22 @@ def _fill_pairs(frac, box, cutoff2, offsets, out):
 
 
 def pair_distances(positions, box, cutoff: float) -> np.ndarray:
-    """Sorted nearest-image distances of all pairs i < j closer than ``cutoff`` <= h_w (3D)."""
+    """Sorted nearest-image distances of all pairs i < j closer than ``cutoff`` <= h_w (3D).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Sphere centres, in the units of ``box``.
+    box : array_like, shape (3, 3)
+        Periodic cell; columns are the lattice vectors.
+    cutoff : float
+        Distance cutoff, 0 < cutoff <= h_w (half the smallest face distance).
+
+    Returns
+    -------
+    ndarray, shape (n_pairs,)
+        Ascending pair distances.
+    """
     cell = Cell(box)
     positions = np.asarray(positions, dtype=float)
     if cell.dim != 3 or positions.ndim != 2 or positions.shape[1] != 3:
@@ -250,6 +265,23 @@ def pair_kernel(kernel: str, rho, r, radius: float) -> np.ndarray:
 
     Divided by v_R (kernel "v") it is p_ij (A7), by a_R ("h", "J") q_ij (A14) and
     a_ij (A21). Direct per-pair form, used for validation and for small r.
+
+    Parameters
+    ----------
+    kernel : {"v", "h", "J"}
+        K_v (lens volume, S2), K_h (F_sv) or K_J (F_ss); module docstring.
+    rho : array_like
+        Pair centre distances (> 0).
+    r : array_like
+        Radial distances (> 0); broadcast with ``rho``.
+    radius : float
+        Sphere radius R = D/2.
+
+    Returns
+    -------
+    ndarray
+        The direction-averaged kernel, shape of ``rho`` and ``r`` broadcast; not yet divided
+        by v_R or a_R.
     """
     w = _kernel_polynomials(radius)[kernel]
     rho, r = np.broadcast_arrays(np.asarray(rho, dtype=float), np.asarray(r, dtype=float))
@@ -276,6 +308,24 @@ def correlation_functions(positions, box, r, diameter: float = 1.0) -> dict[str,
     r -> 0+: S2 = phi, F_sv = s/2, F_ss = inf; the two-body parts there count
     only overlapping pairs (zero for a packing without exact contacts).
     Returns arrays over r plus the scalars phi, s, rho, n, volume.
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Sphere centres, in the units of ``box``.
+    box : array_like, shape (3, 3)
+        Periodic cell; columns are the lattice vectors.
+    r : ndarray, shape (n_r,)
+        Distances >= 0, all below h_w - D (units of ``box``).
+    diameter : float, optional
+        Sphere diameter D.
+
+    Returns
+    -------
+    dict
+        ``S2``, ``F_sv``, ``F_ss``, ``F_sv_two_body``, ``F_ss_two_body``: arrays of shape
+        (n_r,) (S2 dimensionless, F_sv in 1/length, F_ss in 1/length^2); scalars ``phi``,
+        ``s`` (1/length), ``rho`` (1/volume), ``n``, ``volume``.
     """
     positions = np.asarray(positions, dtype=float)
     cell = Cell(box)
@@ -362,6 +412,22 @@ def contact_number(positions, box, diameter: float = 1.0, r: float = 1e-3) -> di
     deviations can appear"]; ``n_within`` is the plain number of pairs with
     gap < r per sphere times 2. Evaluated pair by pair (few pairs are closer
     than D + r), so it is exact for any small r > 0.
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Sphere centres, in the units of ``box``.
+    box : array_like, shape (3, 3)
+        Periodic cell; columns are the lattice vectors.
+    diameter : float, optional
+        Sphere diameter D.
+    r : float, optional
+        Small evaluation distance (> 0, units of ``box``).
+
+    Returns
+    -------
+    dict
+        ``z_B3``, ``z_B4`` and ``n_within`` (floats).
     """
     if not r > 0:
         raise ValueError(f"r must be > 0, got {r}")

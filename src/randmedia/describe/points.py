@@ -148,6 +148,29 @@ def nearest_distance_statistics(positions, box, diameter: float, rng: np.random.
     ``edges`` (last bin open: distances beyond edges[-1] are counted in
     ``overflow``), the number of points, the number of matrix points (d > R),
     sums of delta = d - R and delta^2 over matrix points, and max d.
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Sphere centres, in the units of ``box``.
+    box : array_like, shape (3, 3)
+        Periodic cell; columns are the lattice vectors.
+    diameter : float
+        Sphere diameter D; matrix points have d > D/2.
+    rng : numpy.random.Generator
+        Source of the uniform points.
+    n_matrix_points : int
+        Matrix points to draw.
+    edges : ndarray
+        Histogram bin edges of d (e.g. :func:`distance_bins`).
+    batch : int, optional
+        Largest number of points drawn at once.
+
+    Returns
+    -------
+    dict
+        ``hist`` (int, len(edges) - 1), ``n_points``, ``n_matrix``, ``overflow``,
+        ``sum_delta``, ``sum_delta2``, ``max_distance`` (lengths in the units of ``box``).
     """
     cell = Cell(box)
     cells = CellList(positions, box)
@@ -182,7 +205,22 @@ def nearest_distance_statistics(positions, box, diameter: float, rng: np.random.
 
 
 def exclusion_from_histogram(hist, n_points, overflow=0) -> np.ndarray:
-    """E_V at each edge: fraction of points with d >= edge (the last bin is open)."""
+    """E_V at each edge: fraction of points with d >= edge (the last bin is open).
+
+    Parameters
+    ----------
+    hist : array_like, shape (..., n_bins)
+        Counts of nearest-centre distances per bin (:func:`nearest_distance_statistics`).
+    n_points : array_like, shape (...)
+        Number of points behind each histogram.
+    overflow : array_like, shape (...), optional
+        Points with d >= the last edge.
+
+    Returns
+    -------
+    ndarray, shape (..., n_bins + 1)
+        E_V at the bin edges.
+    """
     hist = np.asarray(hist, dtype=float)
     n_points = np.asarray(n_points, dtype=float)
     beyond = np.flip(np.cumsum(np.flip(hist, axis=-1), axis=-1), axis=-1)  # d >= edge_i, i < n
@@ -197,6 +235,21 @@ def covering_radius(positions, box, pad: float | None = None) -> float:
     The centres are padded by their periodic images within ``pad`` of the cell
     (default: 2 mean spacings); a vertex inside the cell is genuine if its
     empty sphere is smaller than ``pad`` (checked; otherwise retried with 2 pad).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Points (sphere centres), in the units of ``box``.
+    box : array_like, shape (3, 3)
+        Periodic cell; columns are the lattice vectors.
+    pad : float, optional
+        Padding width (units of ``box``); None: 2 (V / n)^(1/3). Capped at the smallest face
+        distance.
+
+    Returns
+    -------
+    float
+        Covering radius R_c (units of ``box``).
     """
     from scipy.spatial import Voronoi, cKDTree
 
@@ -221,7 +274,24 @@ def covering_radius(positions, box, pad: float | None = None) -> float:
 
 
 def throws_per_radius(volume: float, radii, phi_B: float, max_windows: int) -> np.ndarray:
-    """Paper's rule (Sec. VI B): n(R) = min(max_windows, floor(phi_B V / v(R))), at least 1."""
+    """Paper's rule (Sec. VI B): n(R) = min(max_windows, floor(phi_B V / v(R))), at least 1.
+
+    Parameters
+    ----------
+    volume : float
+        Cell volume V.
+    radii : array_like
+        Window radii R (same length unit as V^(1/3)).
+    phi_B : float
+        Largest expected fraction of V covered by the test balls, in (0, 1].
+    max_windows : int
+        Upper bound n_max on the throws.
+
+    Returns
+    -------
+    ndarray of int64
+        n(R), same shape as ``radii``.
+    """
     radii = np.asarray(radii, dtype=float)
     if not 0 < phi_B <= 1:
         raise ValueError(f"phi_B must lie in (0, 1], got {phi_B}")
@@ -308,6 +378,24 @@ def window_counts(positions, box, centres, radii, n_per_radius) -> np.ndarray:
 
     Window m is evaluated for the radii i with m < n_per_radius[i] (nested
     throws); other entries are -1. Returns an int array (n_windows, n_radii).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Sphere centres, in the units of ``box``.
+    box : array_like, shape (3, 3)
+        Periodic cell; columns are the lattice vectors.
+    centres : array_like, shape (n_windows, 3)
+        Window centres.
+    radii : array_like, shape (n_radii,)
+        Strictly ascending positive radii, the largest <= h_w.
+    n_per_radius : array_like of int, shape (n_radii,)
+        Throws per radius, non-increasing, at most ``n_windows``.
+
+    Returns
+    -------
+    ndarray of int64, shape (n_windows, n_radii)
+        N(R) per window, -1 where not evaluated.
     """
     cells = CellList(positions, box)
     radii = np.asarray(radii, dtype=float)
@@ -345,7 +433,18 @@ def window_moments(counts) -> dict:
 
 
 def pooled_shape(n_throws, sum_N, sum_N2, sum_N3, sum_N4):
-    """Skewness and excess kurtosis of the pooled N(R) over samples (axis 0), from power sums."""
+    """Skewness and excess kurtosis of the pooled N(R) over samples (axis 0), from power sums.
+
+    Parameters
+    ----------
+    n_throws, sum_N, sum_N2, sum_N3, sum_N4 : array_like, shape (n_samples, n_radii)
+        Per-sample throws and power sums of N (:func:`window_moments`).
+
+    Returns
+    -------
+    skewness, excess_kurtosis : ndarray, shape (n_radii,)
+        Of the pooled N(R) (not finite where the variance is 0).
+    """
     n, s1, s2, s3, s4 = (np.asarray(a, dtype=float).sum(axis=0) for a in
                          (n_throws, sum_N, sum_N2, sum_N3, sum_N4))
     with np.errstate(invalid="ignore", divide="ignore"):
@@ -360,6 +459,17 @@ def pooled_number_variance(n_throws, sum_N, sum_N2):
     """Pooled mean and variance over samples (axis 0) and delete-one-sample jackknife SEMs.
 
     Inputs have shape (n_samples, n_radii). Returns (mean, variance, mean_sem, variance_sem).
+
+    Parameters
+    ----------
+    n_throws, sum_N, sum_N2 : array_like, shape (n_samples, n_radii)
+        Per-sample throws and power sums of N and N^2 (:func:`window_moments`).
+
+    Returns
+    -------
+    mean, variance, mean_sem, variance_sem : ndarray, shape (n_radii,)
+        Pooled mean and variance (ddof 1) of N(R) and their jackknife SEMs (NaN for one
+        sample).
     """
     n, s1, s2 = (np.asarray(a, dtype=float) for a in (n_throws, sum_N, sum_N2))
 

@@ -51,7 +51,24 @@ def _point_segment_distance(px, py, ax, ay, bx, by):
 def void_distances(level_set: LevelSet, rng: np.random.Generator, *, k_candidates: int = 4,
                    chunk: int = 200_000) -> np.ndarray:
     """Distance (pixels) to the interface from the void query points: one uniformly random
-    point in every pixel (stratified sampling), kept when it lies in the level set's void."""
+    point in every pixel (stratified sampling), kept when it lies in the level set's void.
+
+    Parameters
+    ----------
+    level_set : LevelSet
+        Level-set medium whose phase (fine > threshold) is the void.
+    rng : numpy.random.Generator
+        Source of the query points.
+    k_candidates : int, optional
+        Segments (nearest midpoints) checked per point.
+    chunk : int, optional
+        Points per k-d tree query.
+
+    Returns
+    -------
+    ndarray, shape (n_void_points,)
+        Distances (pixels); inf for every point if the level set has no interface.
+    """
     ny, nx = level_set.shape
     box = np.array([nx, ny], dtype=float)
     rows, cols = np.mgrid[0:ny, 0:nx]
@@ -111,7 +128,34 @@ def pore_size_functions(images, rng: np.random.Generator, *, sigma: float, super
 
     F is evaluated on the grid delta = 0, delta_bin, ..., and P as the histogram density
     of the distances on the bins between those points (labelled by their centres), so
-    that P is the exact bin average of -dF/ddelta of the sample."""
+    that P is the exact bin average of -dF/ddelta of the sample.
+
+    Parameters
+    ----------
+    images : array_like, shape (n_samples, ny, nx)
+        Periodic images, void = 0 and phase 2 = 1.
+    rng : numpy.random.Generator
+        Source of the query points (:func:`void_distances`).
+    sigma : float
+        Gaussian width of the level set (pixels).
+    supersample : int
+        Sub-pixels per pixel along each axis (:class:`~randmedia.describe.chords.LevelSet`).
+    delta_max, delta_bin : float
+        Largest delta of the grid and its step (pixels), 0 < delta_bin < delta_max.
+    model : {"pixels", "bilinear"}, optional
+        Level-set model (:data:`~randmedia.describe.chords.LEVEL_SET_MODELS`).
+    k_candidates : int, optional
+        Passed to :func:`void_distances`.
+    log : logging.Logger, optional
+        Progress log (:class:`randmedia.progress.Progress`).
+
+    Returns
+    -------
+    xarray.Dataset
+        ``F`` on ``delta`` (grid points), ``P`` (1/pixel) on ``delta_bin`` (bin centres), each
+        per sample with mean and SEM; per-sample ``mean_delta_samples``, ``max_delta_samples``
+        (pixels), ``n_points_samples`` and the pixel-centre diagnostics.
+    """
     images = np.asarray(images)
     if images.ndim != 3:
         raise ValueError(f"expected images of shape (n_samples, ny, nx), got {images.shape}")
