@@ -49,7 +49,22 @@ from randmedia.periodic import Cell
 
 
 def sphere_form_factor(k, diameter: float = 1.0, dim: int = 3) -> np.ndarray:
-    """m(k) = (pi D / k)^(d/2) J_{d/2}(k D / 2) (Eq. 15); m(0) = volume of the d-ball."""
+    """m(k) = (pi D / k)^(d/2) J_{d/2}(k D / 2) (Eq. 15); m(0) = volume of the d-ball.
+
+    Parameters
+    ----------
+    k : array_like
+        Wavenumbers |k| (1/length).
+    diameter : float, optional
+        Sphere diameter D.
+    dim : int, optional
+        Dimension d.
+
+    Returns
+    -------
+    ndarray
+        m(k) (length^d), shape of ``k``; the ball volume where k D < 1e-6.
+    """
     k = np.asarray(k, dtype=float)
     volume = math.pi ** (dim / 2) / gamma(1 + dim / 2) * (diameter / 2) ** dim
     with np.errstate(divide="ignore", invalid="ignore"):
@@ -59,7 +74,22 @@ def sphere_form_factor(k, diameter: float = 1.0, dim: int = 3) -> np.ndarray:
 
 
 def form_factor_zeros(k_max: float, diameter: float = 1.0, dim: int = 3) -> np.ndarray:
-    """Zeros of m(k) in (0, k_max]: k D / 2 = zeros of J_{d/2} (the dashed lines of Fig. 6)."""
+    """Zeros of m(k) in (0, k_max]: k D / 2 = zeros of J_{d/2} (the dashed lines of Fig. 6).
+
+    Parameters
+    ----------
+    k_max : float
+        Largest wavenumber searched (1/length).
+    diameter : float, optional
+        Sphere diameter D.
+    dim : int, optional
+        Dimension d.
+
+    Returns
+    -------
+    ndarray
+        Ascending zeros k (1/length).
+    """
     x = np.linspace(1e-6, k_max * diameter / 2, max(200, int(50 * k_max * diameter)))
     f = jv(dim / 2, x)
     roots = [brentq(lambda t: jv(dim / 2, t), a, b, xtol=1e-14)
@@ -116,6 +146,32 @@ def structure_factor(positions, box, k_max: float, *, eps: float = 1e-9, nthread
     Fourier sum relative to sum |c_j| = N; S = |F|^2 / N. The low upsampling
     factor 1.25 (instead of 2) halves the cost at the same tolerance for
     eps >= 1e-11 (finufft documentation).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, 3)
+        Centres, in the units of ``box``.
+    box : array_like, shape (3, 3)
+        Periodic cell; columns are the lattice vectors.
+    k_max : float
+        Largest |k| (1/length, units of ``box``).
+    eps : float, optional
+        finufft tolerance.
+    nthreads : int, optional
+        finufft threads.
+    upsampfac : float, optional
+        finufft upsampling factor.
+
+    Returns
+    -------
+    n : ndarray of int, shape (M, 3)
+        Integer mode vectors (half space, lexicographic).
+    k : ndarray, shape (M, 3)
+        Wavevectors 2 pi B^-T n.
+    kmag : ndarray, shape (M,)
+        |k|.
+    S : ndarray, shape (M,)
+        Structure factor.
     """
     import finufft
 
@@ -160,7 +216,24 @@ def structure_factor_direct(positions, k) -> np.ndarray:
 
 
 def spectral_density_direct(kmag, S, rho: float, diameter: float = 1.0) -> np.ndarray:
-    """chi_V(k) = rho m(k)^2 S(k) (Eq. 14) for non-overlapping spheres, in units of D^3."""
+    """chi_V(k) = rho m(k)^2 S(k) (Eq. 14) for non-overlapping spheres, in units of D^3.
+
+    Parameters
+    ----------
+    kmag : array_like
+        Wavenumbers |k| (1/D when lengths are in D).
+    S : array_like
+        Structure factor at ``kmag``.
+    rho : float
+        Number density of the centres.
+    diameter : float, optional
+        Sphere diameter D.
+
+    Returns
+    -------
+    ndarray
+        chi_V(k), shape of ``kmag`` and ``S`` broadcast.
+    """
     return rho * sphere_form_factor(kmag, diameter) ** 2 * np.asarray(S)
 
 
@@ -171,6 +244,20 @@ def bin_means(kmag, values, edges):
     """Per-bin mean of ``values`` over the wavevectors with |k| in [edges[i], edges[i+1]).
 
     Returns (mean (NaN in empty bins), count, mean |k| of the bin).
+
+    Parameters
+    ----------
+    kmag : array_like, shape (M,)
+        |k| of the wavevectors.
+    values : array_like, shape (M,)
+        Value per wavevector.
+    edges : array_like, shape (n_bins + 1,)
+        Ascending bin edges; |k| outside [edges[0], edges[-1]) is not used.
+
+    Returns
+    -------
+    mean, count, kmean : ndarray, shape (n_bins,)
+        Per bin.
     """
     kmag, values, edges = (np.asarray(a, dtype=float) for a in (kmag, values, edges))
     index = np.searchsorted(edges, kmag, side="right") - 1
@@ -192,7 +279,24 @@ def centred_edges(centres, width: float):
 
 
 def centred_bin_means(kmag, values, centres, width: float):
-    """Means of ``values`` in bins of ``width`` centred on ``centres`` (e.g. a table's kD)."""
+    """Means of ``values`` in bins of ``width`` centred on ``centres`` (e.g. a table's kD).
+
+    Parameters
+    ----------
+    kmag : array_like, shape (M,)
+        |k| of the wavevectors.
+    values : array_like, shape (M,)
+        Value per wavevector.
+    centres : array_like, shape (n_centres,)
+        Ascending bin centres (bins must not overlap).
+    width : float
+        Bin width (units of ``kmag``).
+
+    Returns
+    -------
+    mean, count, kmean : ndarray, shape (n_centres,)
+        As :func:`bin_means`.
+    """
     lo, hi = centred_edges(centres, width)
     edges = np.empty(2 * len(lo))
     edges[0::2], edges[1::2] = lo, hi
@@ -209,6 +313,22 @@ def snap_to_shells(labels, box, step: int = 2):
     (cubic) ``box``, each within a quarter of that spacing, those multiples are returned
     (and True); otherwise the labels themselves (and False) -- e.g. Table V, whose 0.6 m
     are not multiples of an MRJ cell's 2 pi / L, or cells of another size.
+
+    Parameters
+    ----------
+    labels : array_like
+        Printed kD values of the table (1/D).
+    box : array_like, shape (d, d)
+        Periodic cell (columns the lattice vectors, lengths in D).
+    step : int, optional
+        Shells of 2 pi / L per table entry.
+
+    Returns
+    -------
+    centres : ndarray
+        The multiples m step 2 pi / L, or ``labels`` unchanged.
+    snapped : bool
+        Whether the labels were snapped.
     """
     labels = np.asarray(labels, dtype=float)
     cell = Cell(box)
@@ -248,6 +368,22 @@ def table_binnings(labels, centres, box, bin_width: float) -> dict[str, tuple[np
     * ``labels``: width ``bin_width`` centred on the printed ``labels`` (NaN if they are the
       centres).
     NaN centres mean the convention does not apply (its means are NaN).
+
+    Parameters
+    ----------
+    labels : array_like, shape (n_centres,)
+        Printed kD of the table.
+    centres : array_like, shape (n_centres,)
+        Our bin centres for the labels (ascending).
+    box : array_like, shape (d, d)
+        Periodic cell; columns are the lattice vectors.
+    bin_width : float
+        Width of the ``bin_width`` and ``labels`` conventions (1/length).
+
+    Returns
+    -------
+    dict
+        {name: (centres, width)} for the names of :data:`TABLE_BINNINGS`, in that order.
     """
     labels = np.asarray(labels, dtype=float)
     centres = np.asarray(centres, dtype=float)
@@ -270,7 +406,22 @@ def table_binnings(labels, centres, box, bin_width: float) -> dict[str, tuple[np
 def binned_table_values(kmag, values, binnings: dict[str, tuple[np.ndarray, float]]):
     """(means, counts), each (len(binnings), n_centres): :func:`centred_bin_means` of ``values``
     under each convention of :func:`table_binnings` (NaN mean, zero count where it does not
-    apply)."""
+    apply).
+
+    Parameters
+    ----------
+    kmag : array_like, shape (M,)
+        |k| of the wavevectors.
+    values : array_like, shape (M,)
+        Value per wavevector (e.g. chi_V).
+    binnings : dict
+        {name: (centres, width)} from :func:`table_binnings`.
+
+    Returns
+    -------
+    means, counts : ndarray, shape (len(binnings), n_centres)
+        Per convention and centre.
+    """
     means, counts = [], []
     for name, (centres, width) in binnings.items():
         if np.isnan(centres).all():
@@ -296,6 +447,20 @@ def spectral_density_from_autocovariance(r, chi, k) -> np.ndarray:
 
     ``r`` must be a uniform grid from 0; ``chi`` has r as its last axis (samples
     first is fine). Hard cutoff at r[-1] (see the module docstring for k_min).
+
+    Parameters
+    ----------
+    r : array_like, shape (n_r,)
+        Uniform grid from 0 (length).
+    chi : array_like, shape (..., n_r)
+        Autocovariance S2(r) - phi^2 on ``r``.
+    k : array_like
+        Wavenumbers (1/length), 0 allowed.
+
+    Returns
+    -------
+    ndarray, shape (..., n_k)
+        chi_V(k) (length^3).
     """
     r = np.asarray(r, dtype=float)
     chi = np.asarray(chi, dtype=float)
@@ -317,7 +482,22 @@ def smallest_reliable_k(r_cut: float) -> float:
 
 
 def overlapping_spectral_density(k, phi: float, diameter: float = 1.0) -> np.ndarray:
-    """Exact chi_V(k) of overlapping spheres by Eq. (11): chi_V(r) = S2_void(r) - phi1^2, 0 for r >= D."""
+    """Exact chi_V(k) of overlapping spheres by Eq. (11): chi_V(r) = S2_void(r) - phi1^2, 0 for r >= D.
+
+    Parameters
+    ----------
+    k : array_like
+        Wavenumbers (1/length), 0 allowed.
+    phi : float
+        Volume fraction of the spheres (phi1 = 1 - phi the void's).
+    diameter : float, optional
+        Sphere diameter D.
+
+    Returns
+    -------
+    ndarray, shape (n_k,)
+        chi_V(k) (length^3).
+    """
     from randmedia.theory.overlapping import s2_void
 
     radius = diameter / 2

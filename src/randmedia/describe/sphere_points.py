@@ -108,7 +108,24 @@ def _stack(frames: Sequence[np.ndarray]) -> tuple[np.ndarray, np.ndarray]:
 
 def cap_counts_frames(frames: Sequence[np.ndarray], centres: np.ndarray, a, radius: float) -> np.ndarray:
     """counts[f, m, k]: points of frames[f] in the cap of base radius a_k about the unit vector
-    centres[f, m] (one numba call for all frames)."""
+    centres[f, m] (one numba call for all frames).
+
+    Parameters
+    ----------
+    frames : sequence of ndarray, each (N_f, 3)
+        Points on the sphere of radius R, per frame (N_f may differ).
+    centres : ndarray, shape (len(frames), n_centres, 3)
+        Unit vectors of the cap centres, per frame.
+    a : array_like, shape (K,)
+        Increasing cap base radii a_k, 0 < a <= R (length unit of R).
+    radius : float
+        Sphere radius R.
+
+    Returns
+    -------
+    ndarray of int64, shape (len(frames), n_centres, K)
+        Cumulative counts (cap k contains caps < k).
+    """
     thresholds = np.ascontiguousarray(cos_thresholds(a, radius))
     points, n_points = _stack(frames)
     centres = np.ascontiguousarray(centres, dtype=np.float64)
@@ -121,7 +138,24 @@ def cap_counts_frames(frames: Sequence[np.ndarray], centres: np.ndarray, a, radi
 
 def cap_counts(points: np.ndarray, centres: np.ndarray, a, radius: float) -> np.ndarray:
     """counts[m, k]: number of ``points`` (on the sphere of radius R) in the cap of base
-    radius a_k about the unit vector centres[m]."""
+    radius a_k about the unit vector centres[m].
+
+    Parameters
+    ----------
+    points : ndarray, shape (N, 3)
+        Points on the sphere of radius R.
+    centres : ndarray, shape (n_centres, 3)
+        Unit vectors of the cap centres.
+    a : array_like, shape (K,)
+        Increasing cap base radii a_k, 0 < a <= R (length unit of R).
+    radius : float
+        Sphere radius R.
+
+    Returns
+    -------
+    ndarray of int64, shape (n_centres, K)
+        Cumulative counts, as :func:`cap_counts_frames`.
+    """
     centres = np.asarray(centres, dtype=np.float64).reshape(1, -1, 3)
     return cap_counts_frames([points], centres, a, radius)[0]
 
@@ -131,7 +165,24 @@ def cap_counts(points: np.ndarray, centres: np.ndarray, a, radius: float) -> np.
 
 def jackknife_variance(sum_n: np.ndarray, sum_n2: np.ndarray, windows: np.ndarray):
     """Pooled sigma^2 = <n^2> - <n>^2 from per-block sums (B, K) of n and n^2 over ``windows``
-    (B,) windows each; returns (sigma^2 (K,), jackknife SEM (K,), leave-one-out curves (B, K))."""
+    (B,) windows each; returns (sigma^2 (K,), jackknife SEM (K,), leave-one-out curves (B, K)).
+
+    Parameters
+    ----------
+    sum_n, sum_n2 : ndarray, shape (B, K)
+        Per-block sums of the counts n and n^2, B >= 2 blocks, K cap radii.
+    windows : ndarray, shape (B,)
+        Windows per block.
+
+    Returns
+    -------
+    sigma2 : ndarray, shape (K,)
+        Pooled variance.
+    sem : ndarray, shape (K,)
+        Jackknife standard error.
+    leave_out : ndarray, shape (B, K)
+        Leave-one-block-out variances.
+    """
     sum_n, sum_n2 = np.asarray(sum_n, float), np.asarray(sum_n2, float)
     windows = np.asarray(windows, float)
     if sum_n.ndim != 2 or sum_n.shape != sum_n2.shape or windows.shape != (sum_n.shape[0],):
@@ -161,6 +212,32 @@ def cap_variance(frames: Sequence[np.ndarray], radius: float, a, rng: np.random.
     One frame: the centres are split into ``n_blocks`` groups; several frames: the
     frames are (at least ``n_blocks`` of them needed). Returns (sigma^2, SEM,
     leave-one-out curves (n_blocks, K), mean count (K,)).
+
+    Parameters
+    ----------
+    frames : sequence of ndarray, each (N_f, 3)
+        Configurations: points on the sphere of radius R.
+    radius : float
+        Sphere radius R.
+    a : array_like, shape (K,)
+        Increasing cap base radii a_k, 0 < a <= R (length unit of R).
+    rng : numpy.random.Generator
+        Source of the window centres.
+    n_centres : int
+        Random centres per frame (>= 1).
+    n_blocks : int
+        Jackknife blocks.
+
+    Returns
+    -------
+    sigma2 : ndarray, shape (K,)
+        Pooled number variance per cap radius.
+    sem : ndarray, shape (K,)
+        Jackknife standard error over blocks.
+    leave_out : ndarray, shape (n_blocks, K)
+        Leave-one-block-out variances.
+    mean_count : ndarray, shape (K,)
+        Mean number of points per cap.
     """
     a = np.asarray(a, dtype=float)
     if n_centres < 1:
@@ -237,6 +314,26 @@ def geodesic_g2(frames: Sequence[np.ndarray], radius: float, n_bins: int, n_bloc
     """g2 on ``n_bins`` equal bins of geodesic distance x in [0, pi R] (module docstring).
 
     Returns (x_edges, g2, SEM over contiguous blocks of frames; NaN with one frame).
+
+    Parameters
+    ----------
+    frames : sequence of ndarray, each (N_f, 3)
+        Configurations: points on the sphere of radius R.
+    radius : float
+        Sphere radius R.
+    n_bins : int
+        Bins of x over [0, pi R] (>= 1).
+    n_blocks : int
+        Blocks of frames for the SEM (used when there are at least max(2, n_blocks) frames).
+
+    Returns
+    -------
+    x_edges : ndarray, shape (n_bins + 1,)
+        Bin edges (length unit of R).
+    g2 : ndarray, shape (n_bins,)
+        Pair correlation per bin.
+    sem : ndarray, shape (n_bins,)
+        Standard error over blocks (NaN without blocks).
     """
     check_radius(radius)
     if n_bins < 1:
@@ -268,7 +365,22 @@ def geodesic_g2(frames: Sequence[np.ndarray], radius: float, n_bins: int, n_bloc
 
 def window_average_variance(points: np.ndarray, radius: float, a) -> np.ndarray:
     """Eq. (3): the variance over *all* window positions of one configuration,
-    rho s [1 - rho s + (1/N) sum_{i != j} alpha2(x_ij; a)]."""
+    rho s [1 - rho s + (1/N) sum_{i != j} alpha2(x_ij; a)].
+
+    Parameters
+    ----------
+    points : ndarray, shape (N, 3)
+        One configuration on the sphere of radius R.
+    radius : float
+        Sphere radius R.
+    a : array_like
+        Cap base radii (length unit of R).
+
+    Returns
+    -------
+    ndarray, shape (len(a),)
+        sigma^2(a) averaged over all window positions.
+    """
     points = np.asarray(points, dtype=float)
     n = points.shape[0]
     unit = points / radius
@@ -288,7 +400,33 @@ def window_average_variance(points: np.ndarray, radius: float, a) -> np.ndarray:
 def variance_dataset(a, radius: float, density: float, variants: dict, *, x_edges, g2, g2_sem,
                      sigma2_from_g2, attrs: dict) -> xr.Dataset:
     """The descriptor file of one system: for each variant in ``variants`` (name ->
-    (sigma2, sem, leave_out (B, K), mean_count)), plus g2 and Eq. (4)/(5) from g2."""
+    (sigma2, sem, leave_out (B, K), mean_count)), plus g2 and Eq. (4)/(5) from g2.
+
+    Parameters
+    ----------
+    a : array_like, shape (K,)
+        Increasing cap base radii a_k, 0 < a <= R (length unit of R).
+    radius : float
+        Sphere radius R.
+    density : float
+        Number density rho used for sigma^2 / (rho s).
+    variants : dict
+        Name (from :data:`VARIANTS`) -> (sigma2 (K,), sem (K,), leave_out (B, K),
+        mean_count (K,)), e.g. of :func:`cap_variance`; the same B for all.
+    x_edges : array_like, shape (n_bins + 1,)
+        Bin edges of g2 (length unit of R).
+    g2, g2_sem : array_like, shape (n_bins,)
+        Geodesic g2 and its SEM (:func:`geodesic_g2`).
+    sigma2_from_g2 : array_like, shape (K,)
+        sigma^2 from g2 by Eq. (4) or (5).
+    attrs : dict
+        Attributes of the file (``R`` and ``density`` are added).
+
+    Returns
+    -------
+    xarray.Dataset
+        The descriptor file (:data:`CAP_VARIANCE`).
+    """
     names = [v for v in VARIANTS if v in variants]
     if not names or set(variants) - set(VARIANTS):
         raise ValueError(f"variants must be among {VARIANTS}, got {sorted(variants)}")
@@ -329,7 +467,29 @@ def describe_configurations(ds: xr.Dataset, *, n_a: int, pattern_centres: int, f
     """Every descriptor of one configuration file (``results/sphere2019/configs/{system}.nc``):
     sigma^2(a) with random centres (``pattern_centres`` on a single fixed pattern,
     ``frame_centres`` per frame otherwise), for a fluid also from the recorded three-origin
-    counts (its own cap grid), g2 and sigma^2 from g2 by Eq. (4) or (5)."""
+    counts (its own cap grid), g2 and sigma^2 from g2 by Eq. (4) or (5).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        Configuration file: attributes ``R``, ``ensemble``; frames; for a fluid also
+        ``axis_counts`` on its own ``a`` grid and ``tau_caps``.
+    n_a : int
+        Cap radii of the grid a_k = R k / n_a (when the file has no ``axis_counts``).
+    pattern_centres, frame_centres : int
+        Random centres for a single pattern, and per frame for several frames.
+    n_blocks : int
+        Jackknife blocks.
+    g2_bin_width_rho_half : float
+        Width of the g2 bins in units of rho^(-1/2).
+    rng : numpy.random.Generator
+        Source of the window centres.
+
+    Returns
+    -------
+    xarray.Dataset
+        The descriptor file (:func:`variance_dataset`).
+    """
     from randmedia.generate.sphere_surface import frames_of
     from randmedia.theory.sphere_caps import variance_from_g2
 
