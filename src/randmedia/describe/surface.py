@@ -185,7 +185,22 @@ def _deposit(segments, spacing, grid):
 
 def interface_density(segments: np.ndarray, shape, spacing: float) -> np.ndarray:
     """M on the sub-pixel grid (1/pixel): deposited segment length per sub-pixel area.
-    Its mean is exactly the polyline length per unit area (the specific surface)."""
+    Its mean is exactly the polyline length per unit area (the specific surface).
+
+    Parameters
+    ----------
+    segments : ndarray, shape (n, 4)
+        Interface segments x0, y0, x1, y1 in pixels (:func:`interface_segments`).
+    shape : tuple of int
+        Shape of the sub-pixel grid.
+    spacing : float
+        Sub-pixel spacing (pixels).
+
+    Returns
+    -------
+    ndarray, shape ``shape``
+        M per sub-pixel (1/pixel).
+    """
     grid = np.zeros(shape)
     _deposit(np.ascontiguousarray(segments, dtype=np.float64), float(spacing), grid)
     return grid / (spacing * spacing)
@@ -213,7 +228,23 @@ def euler_characteristic(inside: np.ndarray, fine: np.ndarray | None = None,
     ``fine`` when given -- the marching-squares rule of :func:`interface_segments` -- and
     not connected (4-connectivity of ``inside``) otherwise. On a torus this is the integral
     of the interface's curvature / (2 pi), i.e. the local (Gauss-Bonnet) Euler characteristic,
-    whatever clusters wrap around."""
+    whatever clusters wrap around.
+
+    Parameters
+    ----------
+    inside : ndarray of bool, shape (ny, nx)
+        The region, on a periodic grid.
+    fine : ndarray, shape (ny, nx), optional
+        Field whose 2 x 2 window mean, compared with ``threshold``, decides diagonal
+        connections; None: 4-connectivity.
+    threshold : float, optional
+        Level of ``fine`` above which a window centre is inside.
+
+    Returns
+    -------
+    float
+        Euler characteristic of the whole grid (a number, not per area).
+    """
     a = np.asarray(inside, dtype=bool)
     b = np.roll(a, -1, axis=1)
     c = np.roll(a, -1, axis=0)
@@ -295,7 +326,24 @@ BIN_WEIGHTINGS = ("angular", "lattice")
 def surface_binning(fine_shape, supersample: int, r_max: float, bin_width: float,
                     bin_weighting: str = "angular") -> RadialBinning:
     """The radial bins of the surface functions on the sub-pixel grid (r_max, bin_width in
-    pixels); also what a comparison rebuilds to average the exact functions the same way."""
+    pixels); also what a comparison rebuilds to average the exact functions the same way.
+
+    Parameters
+    ----------
+    fine_shape : tuple of int
+        Shape of the sub-pixel grid.
+    supersample : int
+        Sub-pixels per pixel along each axis.
+    r_max, bin_width : float
+        Largest distance and bin width (pixels).
+    bin_weighting : {"angular", "lattice"}, optional
+        Per-direction or per-displacement weights (:data:`BIN_WEIGHTINGS`).
+
+    Returns
+    -------
+    RadialBinning
+        Bins in sub-pixel units (``r_mean / supersample`` gives pixels).
+    """
     if bin_weighting not in BIN_WEIGHTINGS:
         raise ValueError(f"bin_weighting must be one of {BIN_WEIGHTINGS}, got {bin_weighting!r}")
     return RadialBinning.build(fine_shape, r_max * supersample, bin_width * supersample,
@@ -310,7 +358,32 @@ def surface_functions(images, *, sigma: float, supersample: int, r_max: float,
     sample, mean and SEM. ``r_max`` and ``bin_width`` in pixels (``bin_width`` a multiple
     of the sub-pixel spacing 1/supersample); ``bin_weighting``: equal weight per
     displacement ("lattice") or direction average ("angular") in each bin.
-    ``log``: a logger for progress (rate, ETA)."""
+    ``log``: a logger for progress (rate, ETA).
+
+    Parameters
+    ----------
+    images : array_like, shape (n_samples, ny, nx)
+        Periodic images, void = 0.
+    sigma : float
+        Gaussian width of the level sets (pixels).
+    supersample : int
+        Sub-pixels per pixel along each axis.
+    r_max, bin_width : float
+        Largest distance and bin width (pixels).
+    model : {"pixels", "bilinear"}, optional
+        Level-set model (:data:`~randmedia.describe.chords.LEVEL_SET_MODELS`).
+    bin_weighting : {"angular", "lattice"}, optional
+        Weights within a bin.
+    log : logging.Logger, optional
+        Progress log.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``F_sv`` (1/pixel), ``F_ss`` (1/pixel^2), ``S2_void`` with ``*_samples`` and
+        ``*_sem`` on ``r`` (pixels); per sample ``s_samples``, ``phi_void_samples``,
+        ``euler_samples``, ``wraps_phase1_samples``, ``wraps_phase2_samples``.
+    """
     images = np.asarray(images)
     if images.ndim != 3:
         raise ValueError(f"expected images of shape (n_samples, ny, nx), got {images.shape}")
@@ -383,7 +456,24 @@ SURFACE = {
 
 
 def mean_specific_surface(images, sigma: float, supersample: int, model: str = "pixels") -> float:
-    """Sample mean of the level sets' specific surface (void phase = image value 0)."""
+    """Sample mean of the level sets' specific surface (void phase = image value 0).
+
+    Parameters
+    ----------
+    images : array_like, shape (n_samples, ny, nx)
+        Periodic images, void = 0.
+    sigma : float
+        Gaussian width of the level sets (pixels).
+    supersample : int
+        Sub-pixels per pixel along each axis.
+    model : {"pixels", "bilinear"}, optional
+        Level-set model.
+
+    Returns
+    -------
+    float
+        Mean s (1/pixel).
+    """
     return float(np.mean([specific_surface_of(LevelSet.build(image, 0, sigma, supersample, model))
                           for image in images]))
 
@@ -402,6 +492,30 @@ def tune_sigma(images, s_target: float, *, supersample: int, model: str = "pixel
     evaluation (sigma, s - s_target, seconds per evaluation and an estimate of the time
     left from the evaluations bisection would need, 3 + log2((hi - lo) / xtol); Brent's
     method rarely needs more).
+
+    Parameters
+    ----------
+    images : array_like, shape (n_samples, ny, nx)
+        Periodic images, void = 0.
+    s_target : float
+        Target specific surface (1/pixel, > 0).
+    supersample : int
+        Sub-pixels per pixel along each axis.
+    model : {"pixels", "bilinear"}, optional
+        Level-set model.
+    bracket : tuple of float, optional
+        (lo, hi) of sigma searched (pixels).
+    xtol : float, optional
+        Tolerance on sigma (pixels), passed to brentq.
+    log : logging.Logger, optional
+        Progress log.
+
+    Returns
+    -------
+    sigma : float
+        Tuned width (pixels).
+    s : float
+        Mean specific surface at ``sigma`` (1/pixel).
     """
     if s_target <= 0:
         raise ValueError(f"s_target must be > 0, got {s_target}")

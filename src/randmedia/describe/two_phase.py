@@ -59,6 +59,24 @@ class RadialBinning:
     @classmethod
     def build(cls, shape, r_max: float, bin_width: float = 1.0,
               angular: bool = False) -> "RadialBinning":
+        """Bin the minimal-image lattice displacements with |v| <= ``r_max``.
+
+        Parameters
+        ----------
+        shape : tuple of int
+            Shape of the periodic lattice (the image).
+        r_max : float
+            Largest |v| kept (lattice units, e.g. pixels); must be < min(shape)/2.
+        bin_width : float, optional
+            Bin width; bin k holds |v| within bin_width/2 of k bin_width. Below 1, empty bins
+            raise ValueError.
+        angular : bool, optional
+            Per-direction weights (2D only; module docstring) instead of equal weights.
+
+        Returns
+        -------
+        RadialBinning
+        """
         shape = tuple(int(n) for n in shape)
         if r_max <= 0 or bin_width <= 0:
             raise ValueError(f"r_max and bin_width must be > 0, got {r_max}, {bin_width}")
@@ -155,6 +173,17 @@ def two_point_function(
     variables ``S2_samples`` (sample, r), ``S2`` and ``S2_sem`` (r; SEM over
     samples with ddof = 1, NaN for one sample), ``phi_samples`` (sample) and
     ``n_vectors`` (r; displacements in each bin).
+
+    Parameters
+    ----------
+    images : array_like, shape (n_samples, *image_shape)
+        Periodic 2D or 3D images of phase labels.
+    phase : int
+        Label of the phase.
+    r_max : float
+        Largest distance (pixels), < min(image_shape)/2.
+    bin_width : float, optional
+        Bin width (pixels).
     """
     images = np.asarray(images)
     if images.ndim not in (3, 4):
@@ -203,7 +232,22 @@ def s2_discrepancy(s2: xr.Dataset, target_s2, image_shape) -> np.ndarray:
     """Delta S2 per sample (Ma & Torquato 2020, Sec. IV): mean over the bins r > 0 of an
     S2 dataset from :func:`two_point_function` of |S2 - target|, the target being the exact
     bin average of ``target_s2`` over the same displacements -- the bins and target the
-    Yeong-Torquato construction uses when the dataset's r_max is its l_c."""
+    Yeong-Torquato construction uses when the dataset's r_max is its l_c.
+
+    Parameters
+    ----------
+    s2 : xarray.Dataset
+        Output of :func:`two_point_function` (attributes ``r_max``, ``bin_width``).
+    target_s2 : callable
+        Target S2 as a function of distance (pixels), vectorized.
+    image_shape : tuple of int
+        Shape of the images.
+
+    Returns
+    -------
+    ndarray, shape (n_samples,)
+        Delta S2 per sample.
+    """
     binning = RadialBinning.build(image_shape, float(s2.attrs["r_max"]),
                                   float(s2.attrs["bin_width"]))
     target = binning.average_of(target_s2)

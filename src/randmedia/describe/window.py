@@ -66,7 +66,22 @@ def periodic_estimator_expectation(s2: Callable[[np.ndarray], np.ndarray],
 def window_binning(shape, r_max: float, bin_width: float = 1.0) -> RadialBinning:
     """Bins of the window estimator for an image of ``shape``: those of the periodic estimator
     for the same r_max (same displacements, counts and labels), laid out on the zero-padded
-    grid. Requires r_max < min(shape)/2, like the periodic estimator."""
+    grid. Requires r_max < min(shape)/2, like the periodic estimator.
+
+    Parameters
+    ----------
+    shape : tuple of int
+        Shape of the window image.
+    r_max : float
+        Largest distance (pixels), 0 < r_max < min(shape)/2.
+    bin_width : float, optional
+        Bin width (pixels).
+
+    Returns
+    -------
+    RadialBinning
+        Built on the padded shape (``binning.shape``).
+    """
     shape = tuple(int(n) for n in shape)
     if not 0 < r_max < min(shape) / 2:
         raise ValueError(f"r_max = {r_max:g} must lie in (0, min(shape)/2 = {min(shape) / 2:g})")
@@ -76,7 +91,24 @@ def window_binning(shape, r_max: float, bin_width: float = 1.0) -> RadialBinning
 
 def window_s2_samples(images, phase: int, r_max: float, bin_width: float = 1.0) -> np.ndarray:
     """Window S2 of ``phase`` per sample and bin, shape (n_samples, n_bins), for a stack of
-    images (n_samples, *shape); bins and labels as ``window_binning(shape, r_max).r_mean``."""
+    images (n_samples, *shape); bins and labels as ``window_binning(shape, r_max).r_mean``.
+
+    Parameters
+    ----------
+    images : array_like, shape (n_samples, *shape)
+        Non-periodic 2D or 3D window images of phase labels.
+    phase : int
+        Label of the phase.
+    r_max : float
+        Largest distance (pixels), < min(shape)/2.
+    bin_width : float, optional
+        Bin width (pixels).
+
+    Returns
+    -------
+    ndarray, shape (n_samples, n_bins)
+        Window estimate of S2.
+    """
     images = np.asarray(images)
     if images.ndim not in (3, 4):
         raise ValueError(f"expected images of shape (n_samples, [nz,] ny, nx), got {images.shape}")
