@@ -73,7 +73,20 @@ def cell_coordinate(f, n):
 
 @njit(cache=True, inline="always")
 def flat_index(c0, c1, c2, ncell):
-    """Flat number of cell (c0, c1, c2) in a grid of ncell[0] x ncell[1] x ncell[2] cells."""
+    """Flat number of cell (c0, c1, c2) in a grid of ncell[0] x ncell[1] x ncell[2] cells.
+
+    Parameters
+    ----------
+    c0, c1, c2 : int
+        Cell index along each axis.
+    ncell : ndarray of int64, shape (3,)
+        Cells per axis.
+
+    Returns
+    -------
+    int
+        (c0 ncell[1] + c1) ncell[2] + c2.
+    """
     return (c0 * ncell[1] + c1) * ncell[2] + c2
 
 
@@ -88,7 +101,22 @@ def cell_triple(flat, ncell):
 
 @njit(cache=True)
 def cell_index(x, y, z, box, ncell):
-    """Flat cell of the point (x, y, z) in [0, box[k]) of an orthogonal box with lengths box."""
+    """Flat cell of the point (x, y, z) in [0, box[k]) of an orthogonal box with lengths box.
+
+    Parameters
+    ----------
+    x, y, z : float
+        Point coordinates (z = 0 in 2D).
+    box : ndarray, shape (3,)
+        Box lengths (third 1 in 2D).
+    ncell : ndarray of int64, shape (3,)
+        Cells per axis.
+
+    Returns
+    -------
+    int
+        The flat cell number.
+    """
     cx = min(int(x / box[0] * ncell[0]), ncell[0] - 1)
     cy = min(int(y / box[1] * ncell[1]), ncell[1] - 1)
     cz = min(int(z / box[2] * ncell[2]), ncell[2] - 1)
@@ -130,7 +158,22 @@ def image_cell(box, s0, s1, s2, w0, w1, w2, ncell, qc):
 def neighbour_cells(c, ncell, out):
     """Distinct cells among the 3^d around flat cell c (itself included) into out (>= 27
     entries); returns how many. Along an axis of 1 or 2 cells the images coincide and
-    each cell is listed once; order: offsets -1, 0, 1 per axis, first axis slowest."""
+    each cell is listed once; order: offsets -1, 0, 1 per axis, first axis slowest.
+
+    Parameters
+    ----------
+    c : int
+        Flat cell number.
+    ncell : ndarray of int64, shape (3,)
+        Cells per axis.
+    out : ndarray of int64, shape (>= 27,)
+        Receives the flat cell numbers.
+
+    Returns
+    -------
+    int
+        Number of cells written to ``out``.
+    """
     cz = c % ncell[2]
     cy = (c // ncell[2]) % ncell[1]
     cx = c // (ncell[1] * ncell[2])
@@ -168,7 +211,26 @@ def minimum_image(d, length):
 
 @njit(cache=True, inline="always")
 def insert(i, c, members, count, cell_of, slot_of):
-    """Add particle i to flat cell c; returns False (and changes nothing) if c is full."""
+    """Add particle i to flat cell c; returns False (and changes nothing) if c is full.
+
+    Parameters
+    ----------
+    i : int
+        Particle index.
+    c : int
+        Flat cell number.
+    members : ndarray of int64, shape (n_cells, capacity)
+        Particle indices per cell.
+    count : ndarray of int64, shape (n_cells,)
+        Members per cell.
+    cell_of, slot_of : ndarray of int64, shape (n,)
+        Cell and slot of each particle (all four arrays updated in place).
+
+    Returns
+    -------
+    bool
+        True if inserted.
+    """
     if count[c] >= members.shape[1]:
         return False
     members[c, count[c]] = i
@@ -180,7 +242,19 @@ def insert(i, c, members, count, cell_of, slot_of):
 
 @njit(cache=True, inline="always")
 def remove(i, members, count, cell_of, slot_of):
-    """Take particle i out of its cell (the cell's last member moves into the hole)."""
+    """Take particle i out of its cell (the cell's last member moves into the hole).
+
+    Parameters
+    ----------
+    i : int
+        Particle index.
+    members : ndarray of int64, shape (n_cells, capacity)
+        Particle indices per cell.
+    count : ndarray of int64, shape (n_cells,)
+        Members per cell.
+    cell_of, slot_of : ndarray of int64, shape (n,)
+        Cell and slot of each particle (all four arrays updated in place).
+    """
     c = cell_of[i]
     last = members[c, count[c] - 1]
     members[c, slot_of[i]] = last
@@ -191,7 +265,28 @@ def remove(i, members, count, cell_of, slot_of):
 @njit(cache=True)
 def build_members(pos, box, ncell, members, count, cell_of, slot_of):
     """Fill the member table with all rows of pos (orthogonal box lengths box); returns
-    False if a cell overflows."""
+    False if a cell overflows.
+
+    Parameters
+    ----------
+    pos : ndarray, shape (n, 3)
+        Positions in [0, box[k]) (third column 0 in 2D).
+    box : ndarray, shape (3,)
+        Orthogonal box lengths.
+    ncell : ndarray of int64, shape (3,)
+        Cells per axis.
+    members : ndarray of int64, shape (n_cells, capacity)
+        Particle indices per cell.
+    count : ndarray of int64, shape (n_cells,)
+        Members per cell.
+    cell_of, slot_of : ndarray of int64, shape (n,)
+        Cell and slot of each particle (all four arrays filled in place).
+
+    Returns
+    -------
+    bool
+        False if a cell overflowed (the table is then incomplete).
+    """
     count[:] = 0
     for i in range(pos.shape[0]):
         if not insert(i, cell_index(pos[i, 0], pos[i, 1], pos[i, 2], box, ncell), members, count,

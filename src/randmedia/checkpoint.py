@@ -41,7 +41,19 @@ def checkpoint_key(**parts) -> str:
 
 def save_checkpoint(path: str | os.PathLike, key: str, arrays: dict,
                     rng: np.random.Generator | None = None) -> None:
-    """Write ``arrays`` (name -> array or scalar) and, if given, the state of ``rng``."""
+    """Write ``arrays`` (name -> array or scalar) and, if given, the state of ``rng``.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The .npz file, written atomically.
+    key : str
+        Identity of the run (:func:`checkpoint_key`), checked on loading.
+    arrays : dict
+        Name -> array or scalar.
+    rng : numpy.random.Generator, optional
+        Generator whose bit-generator state is stored (as JSON).
+    """
     extra = {_RNG: json.dumps(rng.bit_generator.state, default=int)} if rng is not None else {}
     with atomic_output(path) as tmp:
         with open(tmp, "wb") as handle:
@@ -52,7 +64,24 @@ def load_checkpoint(path: str | os.PathLike, key: str, log: logging.Logger,
                     rng: np.random.Generator | None = None) -> dict | None:
     """The arrays of the checkpoint at ``path`` (copies), or None if there is none, it
     belongs to another run (other key) or cannot be read. With ``rng``, its state is set
-    to the saved one (only when the checkpoint is used)."""
+    to the saved one (only when the checkpoint is used).
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The .npz file.
+    key : str
+        Identity of the current run; a checkpoint with another key is ignored.
+    log : logging.Logger
+        Receives a warning when a checkpoint is ignored.
+    rng : numpy.random.Generator, optional
+        Set to the saved state when the checkpoint is used.
+
+    Returns
+    -------
+    dict or None
+        Name -> array (the saved arrays), or None.
+    """
     path = Path(path)
     if not path.is_file():
         return None

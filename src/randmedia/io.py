@@ -94,7 +94,22 @@ def git_state() -> tuple[str, str]:
 
 
 def provenance_attrs(*, rule: str, seed: int | None, config: Mapping) -> dict[str, str | int]:
-    """The provenance attributes every output file carries."""
+    """The provenance attributes every output file carries.
+
+    Parameters
+    ----------
+    rule : str
+        Name of the producing workflow rule.
+    seed : int or None
+        Seed of the sample (None: no randomness, stored as -1).
+    config : Mapping
+        Configuration values the rule used (stored as JSON).
+
+    Returns
+    -------
+    dict
+        ``randmedia_version``, ``git_commit``, ``git_dirty``, ``rule``, ``seed``, ``config_json``.
+    """
     commit, dirty = git_state()
     return {
         "randmedia_version": randmedia.__version__,
@@ -139,6 +154,24 @@ def write_dataset(
     ``config`` is the set of configuration values the producing rule used; it
     is stored as JSON text in the ``config_json`` attribute. Boolean attributes
     are written as 0/1 (netCDF has no boolean attribute type).
+
+    Parameters
+    ----------
+    ds : xarray.Dataset
+        Data with CF metadata (checked).
+    path : str or os.PathLike
+        Output file.
+    rule : str
+        Name of the producing rule.
+    seed : int or None
+        Seed of the sample (None: no randomness).
+    config : Mapping
+        Configuration values the rule used.
+
+    Returns
+    -------
+    pathlib.Path
+        ``path``.
     """
     _check_cf_metadata(ds)
     ds = ds.copy()
@@ -171,6 +204,20 @@ def read_dataset(
     variable in ``variables`` exists with the given dimensions and units; each
     attribute in ``attrs`` exists. Raises :class:`DataFileError` naming the
     file and the first problem found.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The netCDF file.
+    variables : Mapping[str, VariableSpec], optional
+        Required variables with their dims and units.
+    attrs : sequence of str, optional
+        Required global attributes.
+
+    Returns
+    -------
+    xarray.Dataset
+        The file's contents, loaded.
     """
     path = Path(path)
     if not path.is_file():

@@ -130,6 +130,22 @@ def padded_images(cell: Cell, positions: np.ndarray, cutoff: float):
 
     Returns (points, index): ``points[m]`` is an image of ``positions[index[m]]``; the
     first len(positions) rows are the wrapped positions themselves.
+
+    Parameters
+    ----------
+    cell : Cell
+        The periodic cell.
+    positions : ndarray, shape (n, d)
+        Cartesian points.
+    cutoff : float
+        Padding thickness; at most the smallest face distance of the cell.
+
+    Returns
+    -------
+    points : ndarray, shape (m, d)
+        Wrapped points, then their images in the padding layer.
+    index : ndarray of int, shape (m,)
+        Row of ``positions`` each point is an image of.
     """
     wrapped = cell.wrap(positions)
     f = cell.fractional(wrapped)
@@ -155,6 +171,24 @@ def pairs_within(cell: Cell, positions, cutoff: float):
     Requires ``cutoff <= cell.half_width`` (then the nearest image is the only one
     within the cutoff). Returns (i, j, separation, distance): ``separation[m]`` is
     the vector from particle i[m] to the nearest image of particle j[m].
+
+    Parameters
+    ----------
+    cell : Cell
+        The periodic cell.
+    positions : array_like, shape (n, d)
+        Cartesian points.
+    cutoff : float
+        Pair cutoff, in (0, cell.half_width].
+
+    Returns
+    -------
+    i, j : ndarray of int64, shape (m,)
+        Pair indices, i < j, sorted by (i, j).
+    separation : ndarray, shape (m, d)
+        Nearest-image vector from i to j.
+    distance : ndarray, shape (m,)
+        Its length.
     """
     positions = np.asarray(positions, dtype=float)
     if positions.ndim != 2 or positions.shape[1] != cell.dim:
@@ -179,6 +213,21 @@ def pairs_within(cell: Cell, positions, cutoff: float):
 
 def min_pair_distance(cell: Cell, positions, cutoff: float) -> float:
     """Smallest nearest-image centre distance among the pairs closer than ``cutoff``
-    (:func:`pairs_within`, so ``cutoff <= cell.half_width``); inf if no pair is that close."""
+    (:func:`pairs_within`, so ``cutoff <= cell.half_width``); inf if no pair is that close.
+
+    Parameters
+    ----------
+    cell : Cell
+        The periodic cell.
+    positions : array_like, shape (n, d)
+        Cartesian points.
+    cutoff : float
+        Pair cutoff, in (0, cell.half_width].
+
+    Returns
+    -------
+    float
+        The smallest pair distance below ``cutoff``, or inf.
+    """
     _, _, _, distance = pairs_within(cell, positions, cutoff)
     return float(distance.min()) if distance.size else np.inf

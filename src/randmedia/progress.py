@@ -41,7 +41,19 @@ class Progress:
              force: bool = False) -> None:
         """``count`` more units done; ``detail`` (or what it returns, called only when a line
         is written) is appended to the line after '; '. ``total`` replaces the total (a new
-        estimate); ``force`` logs even within ``every`` seconds."""
+        estimate); ``force`` logs even within ``every`` seconds.
+
+        Parameters
+        ----------
+        count : int, optional
+            Units done in this step (default 1).
+        detail : str or callable, optional
+            Text for the end of the line, or a function returning it.
+        total : int, optional
+            New total of units (None: keep it).
+        force : bool, optional
+            Log regardless of ``every`` (default False).
+        """
         self.done += count
         if total is not None:
             self.total = total

@@ -214,7 +214,24 @@ def write_record(folder, sources: Mapping[str, str | os.PathLike], benchmarks: p
     write ``runtimes.csv`` from ``benchmarks`` and ``run.json`` = ``info_for_files(files)``.
 
     The folder is assembled beside ``folder`` and renamed onto it at the end, so an
-    interrupted job leaves the previous record (or none) in place, never half of one."""
+    interrupted job leaves the previous record (or none) in place, never half of one.
+
+    Parameters
+    ----------
+    folder : str or os.PathLike
+        The record folder to (re)create.
+    sources : Mapping[str, str or os.PathLike]
+        Path in the record -> source file to copy.
+    benchmarks : pandas.DataFrame
+        Snakemake benchmarks of the jobs (one row per job), summarized into runtimes.csv.
+    info_for_files : callable
+        list of file names in the record -> the dict written as run.json.
+
+    Returns
+    -------
+    pathlib.Path
+        ``folder``.
+    """
     folder = Path(folder)
     staging = folder.with_name(f".{folder.name}.incomplete")
     shutil.rmtree(staging, ignore_errors=True)
@@ -283,7 +300,22 @@ def check_record(folder, reference_dir, require_commit: bool = True) -> list[str
     fields, the files it lists, its pass count against comparison.csv, a row for every
     published value (:data:`PUBLISHED_VALUES`, files in ``reference_dir``), notes that match
     the comparison row by row with a reason for every failing row. ``require_commit``: the
-    record must name a git commit and no changed files (a committed record)."""
+    record must name a git commit and no changed files (a committed record).
+
+    Parameters
+    ----------
+    folder : str or os.PathLike
+        The record folder (its name is the paper).
+    reference_dir : str or os.PathLike
+        Folder of the published reference tables.
+    require_commit : bool, optional
+        Require a git commit and a clean checkout in run.json (default True).
+
+    Returns
+    -------
+    list of str
+        One message per problem found.
+    """
     folder = Path(folder)
     problems: list[str] = []
     run_json = folder / "run.json"

@@ -98,7 +98,22 @@ def _source(path) -> str:
 
 def table_page(frame: pd.DataFrame, title: str, source) -> str:
     """A table (any CSV) as an HTML page; with a ``passed`` column, a pass count first and
-    the rows that do not pass highlighted."""
+    the rows that do not pass highlighted.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        The table.
+    title : str
+        Page title.
+    source : str or os.PathLike
+        Path of the CSV, shown on the page.
+
+    Returns
+    -------
+    str
+        The HTML page.
+    """
     parts = [_source(source), f"<p>{len(frame)} rows.</p>"]
     if "passed" in frame.columns:
         failed = _failed_mask(frame)
@@ -113,7 +128,26 @@ def comparison_page(comparison: pd.DataFrame, title: str, source,
     an HTML page: the pass count, the rows that do not pass (with their deviation in units of
     the tolerance and their reason when ``notes`` -- comparison_notes.csv -- are given, matched
     on quantity and key), then every row (with all columns of the notes) with the failures
-    highlighted."""
+    highlighted.
+
+    Parameters
+    ----------
+    comparison : pandas.DataFrame
+        Rows of comparison.csv.
+    title : str
+        Page title.
+    source : str or os.PathLike
+        Path of comparison.csv, shown on the page.
+    notes : pandas.DataFrame, optional
+        Rows of comparison_notes.csv (reasons), joined on quantity and key.
+    notes_source : str or os.PathLike, optional
+        Path of the notes, shown when ``notes`` are given.
+
+    Returns
+    -------
+    str
+        The HTML page.
+    """
     failed = _failed_mask(comparison)
     parts = [_source(source) if notes is None else
              f"<p>Sources: <code>{html.escape(str(source))}</code>, "
@@ -199,7 +233,24 @@ def benchmark_summary(frame: pd.DataFrame) -> pd.DataFrame:
 
 
 def benchmark_page(frame: pd.DataFrame, title: str, source, pattern_note: str = "") -> str:
-    """Benchmarks of a paper's jobs: totals, per rule, then every job."""
+    """Benchmarks of a paper's jobs: totals, per rule, then every job.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        Snakemake benchmarks, one row per job (columns rule, s, cpu_time, max_rss, ...).
+    title : str
+        Page title.
+    source : str or os.PathLike
+        Path of the benchmarks CSV, shown on the page.
+    pattern_note : str, optional
+        Text appended to the explanation of the columns (HTML-escaped).
+
+    Returns
+    -------
+    str
+        The HTML page.
+    """
     total = pd.to_numeric(frame["s"], errors="coerce").sum()
     cpu = pd.to_numeric(frame["cpu_time"], errors="coerce").sum()
     parts = [_source(source),

@@ -166,12 +166,39 @@ class ResumableRun:
         """``step()`` until ``finished()``, with :meth:`save_if_due` after every step.
 
         ``finished`` is called once before each step (it may log why the run ends, or raise
-        if it cannot); ``state`` returns what a checkpoint holds (:meth:`save`)."""
+        if it cannot); ``state`` returns what a checkpoint holds (:meth:`save`).
+
+        Parameters
+        ----------
+        step : callable
+            Advances the run by one step.
+        finished : callable
+            Returns True when the run is done.
+        state : dict or callable
+            Checkpoint contents, or a function returning them.
+        """
         while not finished():
             step()
             self.save_if_due(state)
 
     def progress(self, total: int | None, what: str, unit: str, done: int = 0) -> Progress:
         """A progress log of this run (rule 3): ``done`` units were done before this process,
-        ``total`` (None: unknown) in all; a line at most every ``log_seconds``."""
+        ``total`` (None: unknown) in all; a line at most every ``log_seconds``.
+
+        Parameters
+        ----------
+        total : int or None
+            Units of the whole run (None: unknown).
+        what : str
+            Start of each log line.
+        unit : str
+            Name of a unit.
+        done : int, optional
+            Units done before this process (default 0).
+
+        Returns
+        -------
+        Progress
+            The progress log, writing to this run's logger.
+        """
         return Progress(total, what, self.log, unit=unit, start=done, every=self.log_seconds)

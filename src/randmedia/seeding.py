@@ -20,7 +20,24 @@ def _name_key(name: str) -> int:
 
 
 def sample_seed(base_seed: int, paper: str, system: str, index: int) -> int:
-    """Integer seed (< 2**63, fits a netCDF int64 attribute) for one sample."""
+    """Integer seed (< 2**63, fits a netCDF int64 attribute) for one sample.
+
+    Parameters
+    ----------
+    base_seed : int
+        Seed of the whole workflow (>= 0).
+    paper : str
+        Paper key (e.g. "mrj2016").
+    system : str
+        System name within the paper.
+    index : int
+        Sample index (>= 0).
+
+    Returns
+    -------
+    int
+        Seed derived by numpy SeedSequence from (base_seed, paper, system, index).
+    """
     if base_seed < 0 or index < 0:
         raise ValueError(f"seed and sample index must be >= 0, got {base_seed}, {index}")
     sequence = np.random.SeedSequence(

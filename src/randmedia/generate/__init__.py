@@ -17,7 +17,22 @@ from randmedia.io import VariableSpec
 def refuse_invalid(what: str, checks: Mapping[str, bool], values) -> None:
     """Raise ValueError naming every field of ``values`` whose check in ``checks`` (field
     name -> condition that must hold) fails; the parameter classes of the generators call
-    it from ``__post_init__``."""
+    it from ``__post_init__``.
+
+    Parameters
+    ----------
+    what : str
+        Name of the checked object in the error message (e.g. "inflation-LP parameters").
+    checks : Mapping[str, bool]
+        Field name -> whether its condition holds.
+    values : object
+        The checked object (usually the dataclass instance), shown in the message.
+
+    Raises
+    ------
+    ValueError
+        If any check is False.
+    """
     bad = [name for name, ok in checks.items() if not ok]
     if bad:
         raise ValueError(f"invalid {what}: {bad} ({values})")
@@ -59,6 +74,24 @@ def particle_config_dataset(positions: np.ndarray, box: np.ndarray, diameter: fl
     *columns* of ``box`` (d, d); ``diameter`` is the sphere diameter (attr
     ``diameter``), in the same ``units`` (D = 1 for the mrj2016 systems). The
     spatial dimension is named ``xyz`` whatever d (a 2D file has xyz of length 2).
+
+    Parameters
+    ----------
+    positions : ndarray, shape (n, d)
+        Sphere centres (Cartesian), in ``units``; wrapped into the cell on output.
+    box : ndarray, shape (d, d)
+        Periodic cell, column k = lattice vector k, in ``units``.
+    diameter : float
+        Sphere diameter (> 0), in ``units``; stored as attr ``diameter``.
+    attrs : Mapping
+        Extra global attributes (``diameter``, ``n_particles`` and ``dimension`` are added).
+    units : str, optional
+        Length unit written to the variables (default "D").
+
+    Returns
+    -------
+    xarray.Dataset
+        Variables ``position`` (particle, xyz) and ``box`` (xyz, vec), coords ``xyz``, ``vec``.
     """
     from randmedia.periodic import Cell
 

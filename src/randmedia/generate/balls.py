@@ -45,7 +45,22 @@ def ball_volume(radius: float, dim: int) -> float:
 
 
 def poisson_intensity(phi2: float, radius: float, dim: int) -> float:
-    """Number density rho giving the expected ball-phase fraction phi2: -ln(1 - phi2) / v1(R)."""
+    """Number density rho giving the expected ball-phase fraction phi2: -ln(1 - phi2) / v1(R).
+
+    Parameters
+    ----------
+    phi2 : float
+        Expected volume fraction of the ball phase 2, in (0, 1).
+    radius : float
+        Ball radius R (> 0), in pixels (or any length unit).
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    float
+        Intensity rho, number of centres per unit volume (length unit of ``radius``, to the -d).
+    """
     if not 0.0 < phi2 < 1.0:
         raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
     if radius <= 0:
@@ -56,7 +71,26 @@ def poisson_intensity(phi2: float, radius: float, dim: int) -> float:
 def overlapping_ball_centers(rng: np.random.Generator, side: float, radius: float, phi2: float,
                              dim: int) -> np.ndarray:
     """Poisson centres in the periodic cube [0, side)^d, shape (n, d) as (x, y[, z]); the
-    number is Poisson with mean rho side^d (not fixed)."""
+    number is Poisson with mean rho side^d (not fixed).
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the Poisson count and the uniform positions.
+    side : float
+        Side L of the periodic cube (> 0), in pixels.
+    radius : float
+        Ball radius R, in pixels.
+    phi2 : float
+        Expected ball-phase fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    ndarray, shape (n, d)
+        Centres (x, y[, z]) in [0, side), in pixels; n is Poisson distributed.
+    """
     if side <= 0:
         raise ValueError(f"side must be > 0, got {side}")
     mean = poisson_intensity(phi2, radius, dim)
@@ -109,7 +143,22 @@ def _paint_balls(centers, radius, out, planar):
 
 def digitize_balls(centers: np.ndarray, radius: float, shape: tuple[int, ...]) -> np.ndarray:
     """uint8 image of ``shape`` ((ny, nx) or (nz, ny, nx)): 1 where a voxel centre lies in a
-    ball about one of ``centers`` ((n, d) as (x, y[, z]), periodic)."""
+    ball about one of ``centers`` ((n, d) as (x, y[, z]), periodic).
+
+    Parameters
+    ----------
+    centers : array_like, shape (n, d)
+        Ball centres (x, y[, z]) in pixel units; periodic images are painted.
+    radius : float
+        Ball radius (> 0), in pixels.
+    shape : tuple of int
+        Image shape (ny, nx) for d = 2 or (nz, ny, nx) for d = 3; d = len(shape).
+
+    Returns
+    -------
+    ndarray of uint8, shape ``shape``
+        1 = ball phase 2, 0 = void phase 1.
+    """
     shape = tuple(int(n) for n in shape)
     dim = len(shape)
     _check_dim(dim)
@@ -126,6 +175,25 @@ def digitize_balls(centers: np.ndarray, radius: float, shape: tuple[int, ...]) -
 def overlapping_balls_image(rng: np.random.Generator, side: int, radius: float, phi2: float,
                             dim: int) -> np.ndarray:
     """One periodic side^d image of overlapping balls (1 = ball phase 2); axes (y, x) or
-    (z, y, x)."""
+    (z, y, x).
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Random stream of :func:`overlapping_ball_centers`.
+    side : int
+        Image side L in pixels (also the periodic cube side).
+    radius : float
+        Ball radius R, in pixels.
+    phi2 : float
+        Expected ball-phase fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    ndarray of uint8, shape (side,) * dim
+        1 = ball phase 2, 0 = void phase 1.
+    """
     centers = overlapping_ball_centers(rng, side, radius, phi2, dim)
     return digitize_balls(centers, radius, (side,) * dim)

@@ -34,7 +34,24 @@ def poisson_intensity(phi2: float, radius: float) -> float:
 def overlapping_disk_centers(
     rng: np.random.Generator, side: float, radius: float, phi2: float
 ) -> np.ndarray:
-    """Poisson disk centres in the periodic square [0, side)^2, shape (n, 2) as (x, y)."""
+    """Poisson disk centres in the periodic square [0, side)^2, shape (n, 2) as (x, y).
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the Poisson count and the uniform positions.
+    side : float
+        Side L of the periodic square (> 0), in pixels.
+    radius : float
+        Disk radius R, in pixels.
+    phi2 : float
+        Expected disk-phase fraction, in (0, 1).
+
+    Returns
+    -------
+    ndarray, shape (n, 2)
+        Centres (x, y) in [0, side), in pixels; n is Poisson with mean rho side^2.
+    """
     if side <= 0:
         raise ValueError(f"side must be > 0, got {side}")
     count = rng.poisson(poisson_intensity(phi2, radius) * side * side)
@@ -64,7 +81,22 @@ def _paint_disks(centers, radius, out):
 
 
 def digitize_disks(centers: np.ndarray, radius: float, shape: tuple[int, int]) -> np.ndarray:
-    """uint8 image of ``shape`` (rows, columns): 1 where a pixel centre lies in a disk."""
+    """uint8 image of ``shape`` (rows, columns): 1 where a pixel centre lies in a disk.
+
+    Parameters
+    ----------
+    centers : array_like, shape (n, 2)
+        Disk centres (x, y) in pixel units; periodic images are painted.
+    radius : float
+        Disk radius, in pixels.
+    shape : tuple of int
+        Image shape (rows ny, columns nx).
+
+    Returns
+    -------
+    ndarray of uint8, shape ``shape``
+        1 = disk phase 2, 0 = void phase 1.
+    """
     centers = np.ascontiguousarray(centers, dtype=np.float64).reshape(-1, 2)
     out = np.zeros(shape, dtype=np.uint8)
     _paint_disks(centers, float(radius), out)
@@ -74,6 +106,23 @@ def digitize_disks(centers: np.ndarray, radius: float, shape: tuple[int, int]) -
 def overlapping_disks_image(
     rng: np.random.Generator, side: int, radius: float, phi2: float
 ) -> np.ndarray:
-    """One periodic side x side image of overlapping disks (1 = disk phase 2)."""
+    """One periodic side x side image of overlapping disks (1 = disk phase 2).
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Random stream of :func:`overlapping_disk_centers`.
+    side : int
+        Image side L in pixels (also the periodic square side).
+    radius : float
+        Disk radius R, in pixels.
+    phi2 : float
+        Expected disk-phase fraction, in (0, 1).
+
+    Returns
+    -------
+    ndarray of uint8, shape (side, side)
+        Axes (y, x); 1 = disk phase 2, 0 = void phase 1.
+    """
     centers = overlapping_disk_centers(rng, side, radius, phi2)
     return digitize_disks(centers, radius, (side, side))

@@ -101,7 +101,22 @@ class InflationParameters:
 
 
 def cutoff_for(bound: float, dim: int, diameter: float = 1.0) -> float:
-    """Pairs beyond D (1 + 4 sqrt(d) l) cannot touch after a step (module docstring)."""
+    """Pairs beyond D (1 + 4 sqrt(d) l) cannot touch after a step (module docstring).
+
+    Parameters
+    ----------
+    bound : float
+        Displacement bound l per component, in units of D.
+    dim : int
+        Dimension d.
+    diameter : float, optional
+        Sphere diameter D (default 1).
+
+    Returns
+    -------
+    float
+        The pair cutoff c = D (1 + 4 sqrt(d) l), in the unit of ``diameter``.
+    """
     return diameter * (1.0 + 4.0 * math.sqrt(dim) * bound)
 
 
@@ -111,6 +126,30 @@ def inflation_step(positions: np.ndarray, box: np.ndarray, bound: float, *,
 
     Returns (positions, box, record): the moved packing rescaled so that its closest pair
     touches, and the per-LP record (:data:`STEP_RECORD_KEYS`).
+
+    Parameters
+    ----------
+    positions : ndarray, shape (n, d)
+        Sphere centres, non-overlapping, in the unit of ``diameter``.
+    box : ndarray, shape (d, d)
+        Periodic cell, columns the lattice vectors.
+    bound : float
+        Displacement bound l per component; the cutoff must not exceed the cell half width.
+    diameter : float, optional
+        Sphere diameter D (default 1).
+    backend : str, optional
+        LP solver backend of :func:`randmedia.generate.packing_lp.solve` (default "highs-ipm").
+    threads : int, optional
+        Solver threads (default 1).
+
+    Returns
+    -------
+    positions : ndarray, shape (n, d)
+        Moved, wrapped and rescaled centres.
+    box : ndarray, shape (d, d)
+        The rescaled cell.
+    record : dict
+        Keys :data:`STEP_RECORD_KEYS`.
     """
     n, dim = positions.shape
     cell = Cell(box)
@@ -177,7 +216,22 @@ def stop_reason(inflations, phis, params: InflationParameters) -> str | None:
     docstring): "no inflation" (the last LP predicts sqrt(Gamma) - 1 < ``tolerance``) or
     "stalled" (phi grew by at most ``tolerance`` relative over ``stall_lps`` LPs): collectively
     jammed; "creeping" (phi grew by less than ``creep_gain`` relative over ``creep_lps`` LPs;
-    ``creep_gain`` = 0 never): a sliding motion the fixed cell does not stop."""
+    ``creep_gain`` = 0 never): a sliding motion the fixed cell does not stop.
+
+    Parameters
+    ----------
+    inflations : sequence of float
+        Per-LP predicted inflation sqrt(Gamma) - 1, oldest first.
+    phis : sequence of float
+        Packing fraction after each LP, oldest first.
+    params : InflationParameters
+        Supplies ``tolerance``, ``stall_lps``, ``creep_gain`` and ``creep_lps``.
+
+    Returns
+    -------
+    str or None
+        "no inflation", "stalled", "creeping", or None.
+    """
     if not phis:
         return None
     if inflations[-1] < params.tolerance:
@@ -193,5 +247,20 @@ def stop_reason(inflations, phis, params: InflationParameters) -> str | None:
 
 def converged(inflations, phis, params: InflationParameters) -> bool:
     """Collectively jammed (module docstring): the last LP predicts no inflation, or phi
-    stalled over the last ``params.stall_lps`` LPs. Arguments: the per-LP histories."""
+    stalled over the last ``params.stall_lps`` LPs. Arguments: the per-LP histories.
+
+    Parameters
+    ----------
+    inflations : sequence of float
+        Per-LP predicted inflation sqrt(Gamma) - 1, oldest first.
+    phis : sequence of float
+        Packing fraction after each LP, oldest first.
+    params : InflationParameters
+        Supplies ``tolerance``, ``stall_lps``, ``creep_gain`` and ``creep_lps``.
+
+    Returns
+    -------
+    bool
+        True when :func:`stop_reason` is "no inflation" or "stalled" (not "creeping").
+    """
     return stop_reason(inflations, phis, params) in ("no inflation", "stalled")

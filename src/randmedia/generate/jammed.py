@@ -163,12 +163,45 @@ class JammedPacking:
 
 
 def packing_fraction(positions: np.ndarray, box: np.ndarray, diameter: float = 1.0) -> float:
+    """Packing fraction n v1(D/2) / |det box| of n spheres in a periodic cell.
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, d)
+        Sphere centres (only the shape is used).
+    box : ndarray, shape (d, d)
+        Periodic cell, columns the lattice vectors.
+    diameter : float, optional
+        Sphere diameter D (default 1), same unit as ``box``.
+
+    Returns
+    -------
+    float
+        The packing fraction phi.
+    """
     positions = np.asarray(positions)
     return positions.shape[0] * ball_volume(positions.shape[1], diameter) / abs(np.linalg.det(box))
 
 
 def validate_packing_input(n: int, phi: float, dim: int, diameter: float = 1.0) -> None:
-    """Refuse impossible packings: n < 2, non-positive sizes, phi above the densest packing."""
+    """Refuse impossible packings: n < 2, non-positive sizes, phi above the densest packing.
+
+    Parameters
+    ----------
+    n : int
+        Number of spheres (an integer >= 2).
+    phi : float
+        Target packing fraction, in (0, MAX_PACKING_FRACTION[dim]].
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float, optional
+        Sphere diameter D (> 0; default 1).
+
+    Raises
+    ------
+    ValueError
+        For any refused input.
+    """
     if dim not in MAX_PACKING_FRACTION:
         raise ValueError(f"dimension must be 2 or 3, got {dim}")
     if int(n) != n or n < 2:
@@ -231,6 +264,24 @@ def remove_overlaps(positions: np.ndarray, box: np.ndarray, diameter: float):
 
     Returns (positions, box, factor); afterwards no centre distance is below D
     (the factor is nudged up by ulps until that holds in floating point).
+
+    Parameters
+    ----------
+    positions : ndarray, shape (n, d)
+        Sphere centres, in the unit of ``diameter``.
+    box : ndarray, shape (d, d)
+        Periodic cell, columns the lattice vectors.
+    diameter : float
+        Sphere diameter D.
+
+    Returns
+    -------
+    positions : ndarray, shape (n, d)
+        Rescaled centres (the input unchanged if nothing overlaps).
+    box : ndarray, shape (d, d)
+        Rescaled cell.
+    factor : float
+        The scale factor (>= 1; 1.0 if nothing overlapped).
     """
     cell = Cell(box)
     closest = _min_distance(cell, positions, diameter)
@@ -251,6 +302,32 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
 
     Returns (positions, box, record) with record = dict(trace, rescale, rows, seconds,
     iterations).
+
+    Parameters
+    ----------
+    positions : ndarray, shape (n, d)
+        Non-overlapping sphere centres, in the unit of ``diameter``.
+    box : ndarray, shape (d, d)
+        Periodic cell, columns the lattice vectors.
+    params : TJParameters
+        Bounds, influence gap and LP backend.
+    diameter : float, optional
+        Sphere diameter D (default 1).
+    threads : int, optional
+        Solver threads (default 1).
+    trust : float, optional
+        Trust factor in (0, 1] (default 1); with ``params.shrink_with_trust`` it scales the
+        influence gap and strain bounds instead.
+
+    Returns
+    -------
+    positions : ndarray, shape (n, d)
+        Deformed, moved, overlap-free centres, wrapped into the reduced cell.
+    box : ndarray, shape (d, d)
+        New cell, LLL-reduced (:func:`reduce_cell`).
+    record : dict
+        Per-LP record (``trace`` = Tr epsilon, ``rescale``, ``rows``, timings, iteration
+        counts, bound statistics).
     """
     n, dim = positions.shape
     if params.shrink_with_trust and trust < 1.0:
@@ -503,6 +580,21 @@ def packing_dataset(packing: JammedPacking, analysis, attrs: dict):
     ``contact_gap`` and ``contact_force`` (force per unit pressure from the jamming
     test's duals; 0 for contacts of rattlers), ``rattler`` (particle) and ``phi_history``
     (lp): the packing fraction after each LP.
+
+    Parameters
+    ----------
+    packing : JammedPacking
+        The converged packing (positions, box, diameter and construction record).
+    analysis : JammingAnalysis
+        Contact network, forces, rattlers and jamming test of ``packing``.
+    attrs : dict
+        Extra global attributes (override the computed ones of the same name).
+
+    Returns
+    -------
+    xarray.Dataset
+        The particle-configuration contract plus the variables listed above and the LP history
+        (``lp_stage``, ``lp_predicted``, ``lp_rows``; solve times in attr ``lp_solve_seconds``).
     """
     from randmedia.generate import particle_config_dataset
 

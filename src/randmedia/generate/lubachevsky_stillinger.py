@@ -357,6 +357,24 @@ def _synchronize(t, pos, vel, tloc):
 
 
 def packing_fraction_of(n: int, dim: int, side: float, sigma: float) -> float:
+    """Packing fraction n v1(sigma/2) / side^d of n spheres of diameter sigma in a cubic box.
+
+    Parameters
+    ----------
+    n : int
+        Number of spheres.
+    dim : int
+        Dimension d.
+    side : float
+        Box side L (same unit as ``sigma``).
+    sigma : float
+        Sphere diameter.
+
+    Returns
+    -------
+    float
+        The packing fraction phi.
+    """
     return n * ball_volume(dim, sigma) / side**dim
 
 
@@ -492,6 +510,36 @@ def compress(rng: np.random.Generator, n: int, dim: int = 3,
     info = dict(phi, pressure, events, collisions, time, seconds, pressure_history,
     phi_history). Raises :class:`CompressionError` if the pressure target is not reached
     within ``params.max_events_per_sphere`` events per sphere.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the start (random points if ``positions`` is None) and the velocities.
+    n : int
+        Number of spheres N (>= 2; enough for 3 cells per box side).
+    dim : int, optional
+        Dimension d, 2 or 3 (default 3).
+    params : LSParameters, optional
+        Growth rate, slowdown and target pressures, sync interval, event limit.
+    positions : ndarray, shape (n, d), optional
+        Non-overlapping start in the LS box of side N^(1/d) (number density 1); None for
+        uniform random points.
+    sigma0 : float, optional
+        Diameter of the start, in the LS box units (0 for a random start; default 0).
+    log : logging.Logger, optional
+        Receives progress lines (default: this module's logger).
+    log_seconds : float, optional
+        Seconds between progress lines (default 15).
+
+    Returns
+    -------
+    positions : ndarray, shape (n, d)
+        Centres in units of the final diameter, wrapped into [0, L).
+    box : ndarray, shape (d, d)
+        L I, L the box side over the final diameter.
+    info : dict
+        phi, pressure, events, collisions, time, seconds and the per-interval arrays
+        pressure_history and phi_history.
     """
     log = log or logging.getLogger(__name__)
     system = GrowingSpheres(rng, n, dim, growth_rate=params.growth_rate, positions=positions,

@@ -97,6 +97,24 @@ def constraint_matrix(n: int, i: np.ndarray, j: np.ndarray, separation: np.ndarr
     ``separation[m]`` is the nearest-image vector from sphere i[m] to sphere j[m]
     and ``distance[m]`` its length. Columns: the strain components (omitted when
     ``strain`` is False), then the d displacement components of each sphere.
+
+    Parameters
+    ----------
+    n : int
+        Number of spheres.
+    i, j : ndarray of int, shape (m,)
+        Sphere indices of the m listed pairs.
+    separation : ndarray, shape (m, d)
+        Nearest-image vector from sphere i[m] to sphere j[m] (unit of D).
+    distance : ndarray, shape (m,)
+        Its length rho.
+    strain : bool, optional
+        Include the d(d+1)/2 strain columns (default True).
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix, shape (m, ns + d n)
+        One row per pair; ns = d(d+1)/2 if ``strain`` else 0.
     """
     separation = np.asarray(separation, dtype=float)
     m, dim = separation.shape
@@ -125,6 +143,24 @@ def inflation_matrix(n: int, i: np.ndarray, j: np.ndarray, separation: np.ndarra
 
     Columns: the d displacement components of each sphere, then Gamma. The right-hand
     side is ``-distance / 2``.
+
+    Parameters
+    ----------
+    n : int
+        Number of spheres.
+    i, j : ndarray of int, shape (m,)
+        Sphere indices of the m listed pairs.
+    separation : ndarray, shape (m, d)
+        Nearest-image vector from sphere i[m] to sphere j[m] (unit of D).
+    distance : ndarray, shape (m,)
+        Its length rho.
+    diameter : float, optional
+        Sphere diameter D (default 1).
+
+    Returns
+    -------
+    scipy.sparse.csr_matrix, shape (m, d n + 1)
+        One row per pair.
     """
     displacement = constraint_matrix(n, i, j, separation, distance, strain=False)
     gamma = sp.csr_matrix((-diameter**2 / (2.0 * np.asarray(distance, dtype=float)))[:, None])
@@ -160,6 +196,29 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
 
     ``backend``: one of :data:`BACKENDS`. ``threads`` = 1 keeps the
     solution bit-reproducible. Raises :class:`LPError` unless optimal.
+
+    Parameters
+    ----------
+    cost : ndarray, shape (k,)
+        Objective coefficients.
+    matrix : scipy.sparse matrix, shape (m, k)
+        Constraint rows.
+    row_lower : ndarray, shape (m,)
+        Lower bounds of the rows (no upper bounds).
+    col_lower, col_upper : ndarray, shape (k,)
+        Bounds of the variables.
+    backend : str, optional
+        Solver (default "highs-ipm").
+    threads : int, optional
+        Solver threads (default 1).
+    sense : str, optional
+        "min" (default) or "max".
+
+    Returns
+    -------
+    LPSolution
+        Primal x, row duals, column duals (None for the scipy backend), objective (of the
+        given sense), wall and CPU seconds, iteration counts.
     """
     if backend not in BACKENDS:
         raise ValueError(f"unknown LP backend {backend!r}; expected one of {BACKENDS}")

@@ -93,7 +93,22 @@ def plane_area_density(a: float, dim: int) -> float:
 
 
 def specific_surface(phi2: float, a: float, dim: int) -> float:
-    """s = 2 phi1 phi2 S_V = 2 phi1 phi2 / (a kappa_d): 4 phi1 phi2 / a (3D), Eq. (22) (2D)."""
+    """s = 2 phi1 phi2 S_V = 2 phi1 phi2 / (a kappa_d): 4 phi1 phi2 / a (3D), Eq. (22) (2D).
+
+    Parameters
+    ----------
+    phi2 : float
+        Volume fraction of phase 2, in (0, 1).
+    a : float
+        Correlation length a = 1 / lambda_L (> 0), in pixels.
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    float
+        Specific surface s (interface area per volume), in 1 / (unit of ``a``).
+    """
     _check(phi2, a)
     return 2.0 * phi2 * (1.0 - phi2) * plane_area_density(a, dim)
 
@@ -113,7 +128,23 @@ def poisson_planes(rng: np.random.Generator, shape: tuple[int, ...], a: float) -
     [0, nx) x [0, ny) (x [0, nz)) of an image of ``shape`` (axes (y, x) or (z, y, x)):
     a Poisson number with mean M = 2R / (a kappa_d) of planes hitting the circumscribed
     ball (radius R) about the window's centre, normals uniform on S^(d-1), offsets
-    uniform on [-R, R]."""
+    uniform on [-R, R].
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the count, normals and offsets.
+    shape : tuple of int
+        Image shape (ny, nx) or (nz, ny, nx), in pixels; d = len(shape).
+    a : float
+        Correlation length a (> 0), in pixels.
+
+    Returns
+    -------
+    Planes
+        Normals (m, d) in (x, y[, z]) order, offsets (m,), the window centre (d,) and the
+        circumscribed radius R, in pixels.
+    """
     shape = tuple(int(n) for n in shape)
     dim = len(shape)
     _check(None, a)
@@ -234,7 +265,22 @@ def _first_appearance_labels(hashes, labels):
 
 def cell_labels(planes: Planes, shape: tuple[int, ...], rng: np.random.Generator) -> np.ndarray:
     """Cell index (0 .. n_cells - 1, int64, in order of first appearance in the raveled
-    image) of every voxel centre of an image of ``shape``."""
+    image) of every voxel centre of an image of ``shape``.
+
+    Parameters
+    ----------
+    planes : Planes
+        Hyperplanes of :func:`poisson_planes` for the same ``shape``.
+    shape : tuple of int
+        Image shape (ny, nx) or (nz, ny, nx).
+    rng : numpy.random.Generator
+        Source of the 64-bit plane keys (module docstring).
+
+    Returns
+    -------
+    ndarray of int64, shape ``shape``
+        Cell label of every voxel.
+    """
     shape = tuple(int(n) for n in shape)
     dim = len(shape)
     if planes.normal.shape[1] != dim:
@@ -256,7 +302,24 @@ def poisson_plane_image(rng: np.random.Generator, shape: tuple[int, ...], a: flo
                         phi2: float) -> np.ndarray:
     """uint8 image (1 = phase 2) of a Poisson-plane (3D) / Poisson-line (2D) tessellation with
     independently coloured cells in the window of ``shape``: S2 = phi2^2 + phi1 phi2 e^(-r/a)
-    exactly for every voxel pair (non-periodic; see the module docstring)."""
+    exactly for every voxel pair (non-periodic; see the module docstring).
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the planes, the keys and the cell colours.
+    shape : tuple of int
+        Image shape (ny, nx) or (nz, ny, nx), in pixels.
+    a : float
+        Correlation length a of the Debye S2 (> 0), in pixels.
+    phi2 : float
+        Probability that a cell is phase 2, in (0, 1).
+
+    Returns
+    -------
+    ndarray of uint8, shape ``shape``
+        1 = phase 2, 0 = phase 1.
+    """
     _check(phi2, a)
     planes = poisson_planes(rng, shape, a)
     labels = cell_labels(planes, shape, rng)

@@ -80,6 +80,28 @@ def random_sequential_addition(rng: np.random.Generator, n: int, phi: float, dim
     Returns (positions (n, d), box (d, d) = L I). Refuses phi at or above 0.9 times
     the RSA saturation fraction (where RSA slows down without bound), n < 2 and
     non-positive sizes.
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the candidate positions (drawn in batches).
+    n : int
+        Number of spheres (>= 2).
+    phi : float
+        Packing fraction, in (0, 0.9 RSA_SATURATION[dim]).
+    dim : int, optional
+        Dimension d, 2 or 3 (default 3).
+    diameter : float, optional
+        Sphere diameter D (> 0; default 1); lengths are in its unit.
+    max_trials_per_sphere : float, optional
+        Give up (RuntimeError) after this many trials per sphere (default 1e4).
+
+    Returns
+    -------
+    positions : ndarray, shape (n, d)
+        Centres in [0, L).
+    box : ndarray, shape (d, d)
+        L I with L = (n v1(D/2) / phi)^(1/d).
     """
     if dim not in RSA_SATURATION:
         raise ValueError(f"dimension must be 2 or 3, got {dim}")

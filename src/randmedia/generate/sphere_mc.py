@@ -120,7 +120,21 @@ class Potential:
 
 def dipole_pair_energy(xi: np.ndarray, xj: np.ndarray, alpha: float) -> np.ndarray:
     """Dipolar part of Eq. (12a) in its general vector form, dipoles s = x/|x| normal to the
-    sphere: alpha/r^3 [s_i.s_j - 3 (s_i.r)(s_j.r)/r^2], r = x_j - x_i (rows are pairs)."""
+    sphere: alpha/r^3 [s_i.s_j - 3 (s_i.r)(s_j.r)/r^2], r = x_j - x_i (rows are pairs).
+
+    Parameters
+    ----------
+    xi, xj : ndarray, shape (m, 3) or (3,)
+        Positions of the two particles of each pair (nonzero; their directions give the dipoles),
+        in units of d_LJ.
+    alpha : float
+        Dipole coupling alpha (energy x length^3, reduced units).
+
+    Returns
+    -------
+    ndarray, shape (m,)
+        Dipolar pair energy of each pair, in units of epsilon.
+    """
     xi, xj = np.atleast_2d(xi), np.atleast_2d(xj)
     si = xi / np.linalg.norm(xi, axis=1)[:, None]
     sj = xj / np.linalg.norm(xj, axis=1)[:, None]
@@ -278,7 +292,22 @@ def _sweeps(x, y, z, radius, beta, lj4, c1, c2, c3, step, n_sweeps, rng, tune,
 
 
 def total_energy(positions: np.ndarray, potential: Potential, radius: float) -> float:
-    """Exact total energy of one configuration (numba, O(N^2))."""
+    """Exact total energy of one configuration (numba, O(N^2)).
+
+    Parameters
+    ----------
+    positions : ndarray, shape (N, 3)
+        Points on the sphere, in units of d_LJ.
+    potential : Potential
+        Pair potential of Eqs. (11)-(12).
+    radius : float
+        Sphere radius R, in units of d_LJ (enters the udd / udd_flipped coefficients).
+
+    Returns
+    -------
+    float
+        Sum of the pair energies over all pairs, in units of epsilon.
+    """
     lj4, c1, c2, c3 = potential.coefficients(radius)
     x, y, z = (np.ascontiguousarray(positions[:, k], dtype=np.float64) for k in range(3))
     return float(_total_energy(x, y, z, lj4, c1, c2, c3))
@@ -286,7 +315,26 @@ def total_energy(positions: np.ndarray, potential: Potential, radius: float) -> 
 
 def delta_energy(positions: np.ndarray, i: int, new: np.ndarray, potential: Potential,
                  radius: float) -> float:
-    """Energy change of moving particle i to ``new`` (the kernel used by the moves)."""
+    """Energy change of moving particle i to ``new`` (the kernel used by the moves).
+
+    Parameters
+    ----------
+    positions : ndarray, shape (N, 3)
+        Current points on the sphere, in units of d_LJ.
+    i : int
+        Index of the moved particle.
+    new : ndarray, shape (3,)
+        Its trial position.
+    potential : Potential
+        Pair potential of Eqs. (11)-(12).
+    radius : float
+        Sphere radius R, in units of d_LJ.
+
+    Returns
+    -------
+    float
+        U(after) - U(before), in units of epsilon.
+    """
     lj4, c1, c2, c3 = potential.coefficients(radius)
     x, y, z = (np.ascontiguousarray(positions[:, k], dtype=np.float64) for k in range(3))
     return float(_delta_energy(x, y, z, int(i), float(new[0]), float(new[1]), float(new[2]),

@@ -78,6 +78,22 @@ def points_dataset(frames: Sequence[np.ndarray], radius: float, attrs: Mapping,
     ``frames``: sequence of (n_f, 3) arrays (or one (F, N, 3) array), every point at
     distance R from the origin (checked to 1e-9 R). Shorter frames are padded
     with NaN rows. ``extra``: further data variables (name -> (dims, values, attrs)).
+
+    Parameters
+    ----------
+    frames : sequence of ndarray, each shape (n_f, 3)
+        Point sets on the sphere (Cartesian), in the length unit of ``radius``.
+    radius : float
+        Sphere radius R; stored as attr ``R``.
+    attrs : Mapping
+        Extra global attributes (``R``, ``n_frames``, ``mean_n_points`` and ``density`` are added).
+    extra : Mapping, optional
+        Further data variables, name -> (dims, values, attrs).
+
+    Returns
+    -------
+    xarray.Dataset
+        ``position`` (frame, particle, xyz) NaN-padded, ``n_points`` (frame), coord ``xyz``.
     """
     check_radius(radius)
     frames = [np.asarray(f, dtype=np.float64) for f in frames]
@@ -179,7 +195,20 @@ def _bisect(function, target, lo, hi, iterations: int = 60):
 def equal_area_to_gnomonic(v_eq, t_eq, h: float) -> tuple[np.ndarray, np.ndarray]:
     """Inverse of the area-equalizing map of a sixth (module docstring): equal-area
     coordinates (v', t') -> gnomonic (v, t). h: centre-to-edge-midpoint distance of
-    the face in the tangent plane z = 1."""
+    the face in the tangent plane z = 1.
+
+    Parameters
+    ----------
+    v_eq, t_eq : array_like
+        Equal-area coordinates (v', t') of a sixth, 0 <= v' <= h (broadcast together).
+    h : float
+        Centre-to-edge-midpoint distance of the face in the tangent plane z = 1.
+
+    Returns
+    -------
+    v, t : ndarray
+        Gnomonic coordinates (t = 0 where v = 0).
+    """
     root3 = math.sqrt(3.0)
     v_eq, t_eq = np.broadcast_arrays(np.asarray(v_eq, float), np.asarray(t_eq, float))
     total = _sixth_solid_angle(h, root3)
@@ -189,7 +218,20 @@ def equal_area_to_gnomonic(v_eq, t_eq, h: float) -> tuple[np.ndarray, np.ndarray
 
 
 def gnomonic_to_equal_area(v, t, h: float) -> tuple[np.ndarray, np.ndarray]:
-    """The area-equalizing map of a sixth, (v, t) -> (v', t') (module docstring)."""
+    """The area-equalizing map of a sixth, (v, t) -> (v', t') (module docstring).
+
+    Parameters
+    ----------
+    v, t : array_like
+        Gnomonic coordinates of a sixth, 0 <= v <= h, t = u / v (broadcast together).
+    h : float
+        Centre-to-edge-midpoint distance of the face in the tangent plane z = 1.
+
+    Returns
+    -------
+    v_eq, t_eq : ndarray
+        Equal-area coordinates (v', t').
+    """
     root3 = math.sqrt(3.0)
     v, t = np.broadcast_arrays(np.asarray(v, float), np.asarray(t, float))
     v_eq = h * np.sqrt(_sixth_solid_angle(v, root3) / _sixth_solid_angle(h, root3))
@@ -286,7 +328,22 @@ def fibonacci_grid(n_points: int, radius: float = 1.0) -> np.ndarray:
 
 
 def uniform_points(n_points: int, radius: float, rng: np.random.Generator) -> np.ndarray:
-    """N independent points uniform on the sphere of radius R (canonical ensemble)."""
+    """N independent points uniform on the sphere of radius R (canonical ensemble).
+
+    Parameters
+    ----------
+    n_points : int
+        Number of points N (>= 0).
+    radius : float
+        Sphere radius R.
+    rng : numpy.random.Generator
+        Source of the Gaussian vectors.
+
+    Returns
+    -------
+    ndarray, shape (n_points, 3)
+        Points on the sphere, in the unit of ``radius``.
+    """
     if not (isinstance(n_points, (int, np.integer)) and n_points >= 0):
         raise ValueError(f"number of points must be an integer >= 0, got {n_points!r}")
     check_radius(radius)
@@ -307,7 +364,25 @@ def spherical_rectangles(n_theta: int, n_phi: int) -> np.ndarray:
 def poisson_points(mean_points: float, radius: float, rng: np.random.Generator, *,
                    n_theta: int = 8, n_phi: int = 16) -> np.ndarray:
     """A Poisson point process on the sphere of radius R with mean <N> = ``mean_points``,
-    generated rectangle by rectangle as in the paper's Appendix (module docstring)."""
+    generated rectangle by rectangle as in the paper's Appendix (module docstring).
+
+    Parameters
+    ----------
+    mean_points : float
+        Mean number of points <N> (> 0).
+    radius : float
+        Sphere radius R.
+    rng : numpy.random.Generator
+        Source of the counts and positions.
+    n_theta, n_phi : int, optional
+        Rectangles in theta and in phi (equal steps; defaults 8 and 16).
+
+    Returns
+    -------
+    ndarray, shape (N, 3)
+        Points on the sphere (unit of ``radius``), N Poisson with mean ``mean_points``;
+        grouped by rectangle.
+    """
     if not (mean_points > 0 and math.isfinite(mean_points)):
         raise ValueError(f"mean number of Poisson points must be > 0, got {mean_points!r}")
     check_radius(radius)

@@ -50,7 +50,22 @@ def overlapping_intensity(phi: float, diameter: float = 1.0) -> float:
 
 
 def overlapping_box_side(phi: float, n_mean: float, diameter: float = 1.0) -> float:
-    """Side of the cubic box holding on average ``n_mean`` centres at intensity rho(phi)."""
+    """Side of the cubic box holding on average ``n_mean`` centres at intensity rho(phi).
+
+    Parameters
+    ----------
+    phi : float
+        Covered volume fraction of the Boolean model, in (0, 1).
+    n_mean : float
+        Mean number of centres in the box (> 0).
+    diameter : float, optional
+        Sphere diameter D (default 1); lengths are in its unit.
+
+    Returns
+    -------
+    float
+        Box side L = (n_mean / rho)^(1/3).
+    """
     if n_mean <= 0:
         raise ValueError(f"n_mean must be > 0, got {n_mean}")
     return (n_mean / overlapping_intensity(phi, diameter)) ** (1.0 / 3.0)
@@ -58,7 +73,26 @@ def overlapping_box_side(phi: float, n_mean: float, diameter: float = 1.0) -> fl
 
 def overlapping_spheres(rng: np.random.Generator, phi: float, n_mean: float,
                         diameter: float = 1.0) -> tuple[np.ndarray, np.ndarray]:
-    """Poisson centres in a periodic cube: (positions (n, 3), box 3x3), n ~ Poisson(n_mean)."""
+    """Poisson centres in a periodic cube: (positions (n, 3), box 3x3), n ~ Poisson(n_mean).
+
+    Parameters
+    ----------
+    rng : numpy.random.Generator
+        Source of the Poisson count and the uniform positions.
+    phi : float
+        Covered volume fraction, in (0, 1).
+    n_mean : float
+        Mean number of centres (> 0).
+    diameter : float, optional
+        Sphere diameter D (default 1).
+
+    Returns
+    -------
+    positions : ndarray, shape (n, 3)
+        Centres in [0, L)^3, in units of D.
+    box : ndarray, shape (3, 3)
+        L I.
+    """
     side = overlapping_box_side(phi, n_mean, diameter)
     count = int(rng.poisson(n_mean))
     return rng.uniform(0.0, side, size=(count, 3)), np.eye(3) * side
@@ -88,6 +122,24 @@ def lattice_spheres(lattice: str, n_cells: int, diameter: float = 1.0,
 
     With ``rng`` the whole lattice is translated by a uniform random vector
     (the sample's only randomness); positions are returned unwrapped.
+
+    Parameters
+    ----------
+    lattice : str
+        "fcc" or "bcc".
+    n_cells : int
+        Conventional cubic cells per box side (>= 1).
+    diameter : float, optional
+        Sphere diameter D = nearest-neighbour distance (default 1).
+    rng : numpy.random.Generator, optional
+        Source of the random translation; None for none.
+
+    Returns
+    -------
+    positions : ndarray, shape (4 n_cells^3 or 2 n_cells^3, 3)
+        Sites (unwrapped), in the unit of D.
+    box : ndarray, shape (3, 3)
+        n_cells a I, a the cubic lattice constant.
     """
     if int(n_cells) != n_cells or n_cells < 1:
         raise ValueError(f"n_cells must be a positive integer, got {n_cells}")
@@ -106,6 +158,20 @@ def bragg_peak_count(lattice: str, k_max: float, diameter: float = 1.0) -> int:
     G = (2 pi / a)(h, k, l) with the structure-factor rule of the conventional
     cell: fcc h, k, l all even or all odd; bcc h + k + l even. These are the
     wavevectors where S(k) = N (Bragg peaks); S = 0 at every other allowed k.
+
+    Parameters
+    ----------
+    lattice : str
+        "fcc" or "bcc".
+    k_max : float
+        Largest wavenumber |G|, in 1 / (unit of ``diameter``).
+    diameter : float, optional
+        Sphere diameter D = nearest-neighbour distance (default 1).
+
+    Returns
+    -------
+    int
+        Number of pairs +-G with 0 < |G| <= k_max.
     """
     a = lattice_constant(lattice, diameter)
     m = int(math.floor(k_max * a / (2 * math.pi))) + 1

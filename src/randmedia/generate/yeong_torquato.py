@@ -585,6 +585,22 @@ def tracked_target(target_s2: Callable, phi2: float, binning: RadialBinning) -> 
 
     ``target_s2`` is S2 of phase 2; for the minority phase 1 the target is
     phi1^2 + chi_V(r) with chi_V = S2^(2) - phi2^2.
+
+    Parameters
+    ----------
+    target_s2 : callable
+        r (ndarray, pixels) -> S2 of phase 2 at r; S2(0) must equal ``phi2``.
+    phi2 : float
+        Volume fraction of phase 2.
+    binning : RadialBinning
+        Radial bins of the estimator (width one pixel).
+
+    Returns
+    -------
+    phi : float
+        Volume fraction of the tracked phase, min(phi2, 1 - phi2).
+    target : ndarray, shape (n_bins,)
+        phi^2 + bin average of chi_V, one entry per bin of ``binning``.
     """
     at_zero = float(target_s2(np.array([0.0]))[0])
     if not math.isclose(at_zero, phi2, rel_tol=1e-6, abs_tol=1e-9):

@@ -154,7 +154,23 @@ def apply_flips_kernel(h, nz, ny, nx, flips, signs, n_flips, cutoff, reach_y, ru
                        run_lo, run_hi, run_dx0, run_address):
     """Add signs[k] to h[x, column] of every voxel x within the stencil of flips[k], k < n_flips
     (see the module docstring for the loop order; the arrays after ``n_flips`` are
-    :meth:`Stencil.kernel_arrays`). For jitted callers; :func:`apply_flips` checks its input."""
+    :meth:`Stencil.kernel_arrays`). For jitted callers; :func:`apply_flips` checks its input.
+
+    Parameters
+    ----------
+    h : ndarray, shape (nz * ny * nx, n_columns)
+        Shell counts (C-contiguous, ``Stencil.count_dtype``), updated in place.
+    nz, ny, nx : int
+        Image shape (nz = 1 for a 2D image).
+    flips : ndarray of int64
+        Raveled indices of the flipped voxels.
+    signs : ndarray of int16
+        +1 (voxel became tracked) or -1 per flip.
+    n_flips : int
+        Number of leading entries of ``flips`` / ``signs`` to apply.
+    cutoff, reach_y, run_first, run_count, run_lo, run_hi, run_dx0, run_address
+        The stencil tables of :meth:`Stencil.kernel_arrays`.
+    """
     n_columns = h.shape[1]
     flat = h.reshape(-1)
     n_lines = nz * ny
@@ -229,7 +245,21 @@ def apply_flips(h: np.ndarray, stencil: Stencil, flips: np.ndarray, signs: np.nd
                 n_flips: int | None = None) -> None:
     """In place: h[x, column(x - f)] += sign for every flip f (raveled voxel index) and every
     voxel x of its stencil; the first ``n_flips`` entries of ``flips``/``signs`` (all by
-    default)."""
+    default).
+
+    Parameters
+    ----------
+    h : ndarray, shape (n_voxels, n_columns)
+        Shell counts of ``stencil.count_dtype`` (:func:`shell_counts`), updated in place.
+    stencil : Stencil
+        Stencil of the image shape and cutoff.
+    flips : array_like of int
+        Raveled voxel indices of the flips.
+    signs : array_like of int
+        +1 or -1 per flip.
+    n_flips : int, optional
+        Number of leading entries to apply (default: all).
+    """
     flips = np.ascontiguousarray(flips, dtype=np.int64)
     signs = np.ascontiguousarray(signs, dtype=np.int16)
     n = flips.size if n_flips is None else int(n_flips)

@@ -26,7 +26,30 @@ from randmedia.theory.hard_spheres import ball_volume
 
 def contact_fit(hist, n_measurements, n_particles, box_lengths, diameter, settings) -> dict:
     """g(D+) and beta p / rho from a histogram of pair distances in [D, D (1 + range))
-    accumulated over ``n_measurements`` configurations (module docstring)."""
+    accumulated over ``n_measurements`` configurations (module docstring).
+
+    Parameters
+    ----------
+    hist : array_like, shape (contact_bins,)
+        Pair counts in equal bins of r over [D, D (1 + contact_range)), summed over the measurements.
+    n_measurements : int
+        Number of configurations whose pairs were counted (<= 0 gives NaN results).
+    n_particles : int
+        Number of particles N.
+    box_lengths : array_like, shape (d,)
+        Side lengths of the orthogonal box (same unit as ``diameter``); d = len(box_lengths).
+    diameter : float
+        Particle diameter D.
+    settings : MCSettings
+        Supplies ``contact_order`` (polynomial degree) and ``contact_range``.
+
+    Returns
+    -------
+    dict
+        ``contact_value`` g(D+), ``reduced_pressure`` beta p / rho, ``contact_value_se_fit``
+        (Poisson-count standard error of g(D+), a lower bound for correlated samples) and
+        ``coefficients`` (contact_order + 1,) of g in powers of (r - D) / D.
+    """
     hist = np.asarray(hist, dtype=float)
     box_lengths = np.asarray(box_lengths, dtype=float)
     dim = len(box_lengths)

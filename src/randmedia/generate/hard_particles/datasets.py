@@ -34,7 +34,23 @@ def sample_attrs(result: ChainResult, index: int) -> dict:
 
 
 def contact_histogram_dataset(result: ChainResult, index: int, settings: MCSettings):
-    """The pair counts near contact accumulated since the previous sample (re-fittable)."""
+    """The pair counts near contact accumulated since the previous sample (re-fittable).
+
+    Parameters
+    ----------
+    result : ChainResult
+        The finished chain.
+    index : int
+        Sample index in ``result.samples``.
+    settings : MCSettings
+        Supplies ``contact_range`` and ``contact_bins`` (the bin edges).
+
+    Returns
+    -------
+    xarray.Dataset
+        ``contact_pairs`` (contact_bin,) int64 counts, with coords ``contact_r_lower`` and
+        ``contact_r_upper`` (bin edges r / D).
+    """
     import xarray as xr
 
     edges = 1.0 + np.linspace(0.0, settings.contact_range, settings.contact_bins + 1)

@@ -12,7 +12,24 @@ from randmedia.theory.hard_spheres import FLUID_LIMIT, ball_volume
 
 
 def cubic_box(n_particles: int, phi: float, dim: int, diameter: float = 1.0) -> np.ndarray:
-    """Side lengths (d,) of the cube (square) holding N particles at packing fraction phi."""
+    """Side lengths (d,) of the cube (square) holding N particles at packing fraction phi.
+
+    Parameters
+    ----------
+    n_particles : int
+        Number of particles N.
+    phi : float
+        Packing fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float, optional
+        Particle diameter D (default 1); lengths are in its unit.
+
+    Returns
+    -------
+    ndarray, shape (d,)
+        Equal side lengths L = (N v1(D/2) / phi)^(1/d).
+    """
     if dim not in (2, 3):
         raise ValueError(f"dimension must be 2 or 3, got {dim}")
     if not 0.0 < phi < 1.0:
@@ -22,12 +39,50 @@ def cubic_box(n_particles: int, phi: float, dim: int, diameter: float = 1.0) -> 
 
 
 def packing_fraction_of(n_particles: int, box_lengths, diameter: float) -> float:
+    """Packing fraction N v1(D/2) / prod(box_lengths) of N particles in an orthogonal box.
+
+    Parameters
+    ----------
+    n_particles : int
+        Number of particles N.
+    box_lengths : array_like, shape (d,)
+        Box side lengths (unit of ``diameter``); d = len(box_lengths).
+    diameter : float
+        Particle diameter D.
+
+    Returns
+    -------
+    float
+        The packing fraction phi.
+    """
     box_lengths = np.asarray(box_lengths, dtype=float)
     return float(n_particles * ball_volume(diameter / 2.0, len(box_lengths)) / np.prod(box_lengths))
 
 
 def validate_system(n_particles: int, box_lengths, diameter: float, contact_range: float = 0.1) -> float:
-    """Refuse impossible or off-branch input; returns the packing fraction."""
+    """Refuse impossible or off-branch input; returns the packing fraction.
+
+    Parameters
+    ----------
+    n_particles : int
+        Number of particles N (an integer >= 2).
+    box_lengths : array_like, shape (d,)
+        Box side lengths, d = 2 or 3; each must be >= 2 D (1 + contact_range) + D.
+    diameter : float
+        Particle diameter D (> 0).
+    contact_range : float, optional
+        Width of the contact histogram in units of D (default 0.1).
+
+    Returns
+    -------
+    float
+        The packing fraction phi (at most the end of the fluid branch, FLUID_LIMIT[d]).
+
+    Raises
+    ------
+    ValueError
+        For any of the refused inputs.
+    """
     box_lengths = np.asarray(box_lengths, dtype=float)
     dim = len(box_lengths)
     if dim not in (2, 3):
@@ -63,7 +118,22 @@ _LATTICES = {
 def lattice_sites(n_particles: int, box_lengths, diameter: float):
     """(name, sites) of the first lattice in :data:`_LATTICES` with at least N sites in the
     box and nearest-neighbour distance >= D (cells per side n or n - 1, n = ceil((N/b)^(1/d))),
-    or None when none fits (then the chain starts by RSA + compression)."""
+    or None when none fits (then the chain starts by RSA + compression).
+
+    Parameters
+    ----------
+    n_particles : int
+        Number of particles N the lattice must hold.
+    box_lengths : array_like, shape (d,)
+        Box side lengths (unit of ``diameter``).
+    diameter : float
+        Particle diameter D.
+
+    Returns
+    -------
+    tuple (str, ndarray of shape (m, d)) or None
+        Lattice name and its m >= N sites (Cartesian, in the box), the fitting choice with fewest sites.
+    """
     box_lengths = np.asarray(box_lengths, dtype=float)
     dim = len(box_lengths)
     for name, basis in _LATTICES[dim]:
@@ -86,7 +156,22 @@ def lattice_sites(n_particles: int, box_lengths, diameter: float):
 
 def count_overlaps(positions, box_lengths, diameter: float) -> int:
     """Exact count of pairs closer than ``diameter`` (nearest periodic images), by the
-    k-d tree pair search of :mod:`randmedia.periodic` (independent of the MC cell list)."""
+    k-d tree pair search of :mod:`randmedia.periodic` (independent of the MC cell list).
+
+    Parameters
+    ----------
+    positions : array_like, shape (n, d)
+        Particle centres.
+    box_lengths : array_like, shape (d,)
+        Side lengths of the orthogonal periodic box.
+    diameter : float
+        Distance below which a pair counts as overlapping; must not exceed half the box width.
+
+    Returns
+    -------
+    int
+        Number of pairs with centre distance < ``diameter``.
+    """
     from randmedia.periodic import Cell, pairs_within
 
     box_lengths = np.asarray(box_lengths, dtype=float)

@@ -51,7 +51,36 @@ def _wrap(x, length):
 def sweeps(pos, unwrapped, box, dim, diameter, step, n_sweeps, ncell, members, count,
             cell_of, slot_of, rng):
     """n_sweeps x N single-particle displacement trials; returns accepted moves (-1 if a
-    cell overflowed, which cannot happen for non-overlapping particles)."""
+    cell overflowed, which cannot happen for non-overlapping particles).
+
+    Parameters
+    ----------
+    pos : ndarray, shape (n, 3)
+        Wrapped positions, updated in place (third column 0 in 2D).
+    unwrapped : ndarray, shape (n, 3)
+        Unwrapped positions for the MSD, updated in place (first ``dim`` columns).
+    box : ndarray, shape (3,)
+        Orthogonal box lengths (third a dummy 1 in 2D).
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float
+        Particle diameter D.
+    step : float
+        Half width of the uniform displacement per component.
+    n_sweeps : int
+        Number of sweeps (N trials each).
+    ncell : ndarray of int64, shape (3,)
+        Cells per axis of the member table (1 along z in 2D).
+    members, count, cell_of, slot_of : ndarray of int64
+        Member table of :mod:`randmedia.cell_list`, updated in place.
+    rng : numpy.random.Generator
+        Source of every random number.
+
+    Returns
+    -------
+    int
+        Number of accepted moves, or -1 on a cell overflow.
+    """
     n = pos.shape[0]
     diameter2 = diameter * diameter
     scratch = np.empty(27, dtype=np.int64)
@@ -87,7 +116,33 @@ def sweeps(pos, unwrapped, box, dim, diameter, step, n_sweeps, ncell, members, c
 @njit(cache=True)
 def pair_scan(pos, box, ncell, members, count, diameter, r_max, n_bins, hist):
     """Histogram pairs with D <= r < r_max into hist (n_bins equal bins); returns
-    (number of overlapping pairs r < D, smallest pair distance)."""
+    (number of overlapping pairs r < D, smallest pair distance).
+
+    Parameters
+    ----------
+    pos : ndarray, shape (n, 3)
+        Positions (third column 0 in 2D).
+    box : ndarray, shape (3,)
+        Orthogonal box lengths.
+    ncell : ndarray of int64, shape (3,)
+        Cells per axis; cells must be at least ``r_max`` wide.
+    members, count : ndarray of int64
+        Member table of :mod:`randmedia.cell_list` built for ``pos``.
+    diameter : float
+        Particle diameter D, the lower edge of the histogram.
+    r_max : float
+        Upper edge of the histogram, D (1 + contact_range).
+    n_bins : int
+        Number of equal bins on [D, r_max).
+    hist : ndarray of int64, shape (n_bins,)
+        Incremented in place.
+
+    Returns
+    -------
+    tuple (int, float)
+        Number of pairs with r < D, and the smallest pair distance found (inf if no pair in
+        the scanned cells).
+    """
     scratch = np.empty(27, dtype=np.int64)
     overlaps = 0
     r2_min = np.inf
@@ -123,7 +178,32 @@ def pair_scan(pos, box, ncell, members, count, diameter, r_max, n_bins, hist):
 @njit(cache=True)
 def random_sequential_addition(pos, box, dim, diameter, ncell, members, count, cell_of, slot_of,
                                max_attempts, rng):
-    """Random sequential addition of pos.shape[0] particles; returns how many were placed."""
+    """Random sequential addition of pos.shape[0] particles; returns how many were placed.
+
+    Parameters
+    ----------
+    pos : ndarray, shape (n, 3)
+        Filled in place with the placed positions (third column 0 in 2D).
+    box : ndarray, shape (3,)
+        Orthogonal box lengths (third a dummy 1 in 2D).
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float
+        Particle diameter D.
+    ncell : ndarray of int64, shape (3,)
+        Cells per axis of the member table (1 along z in 2D).
+    members, count, cell_of, slot_of : ndarray of int64
+        Member table of :mod:`randmedia.cell_list`, updated in place.
+    max_attempts : int
+        Number of trial insertions after which it gives up.
+    rng : numpy.random.Generator
+        Source of every random number.
+
+    Returns
+    -------
+    int
+        Number of particles placed (< n if ``max_attempts`` ran out), or -1 on a cell overflow.
+    """
     diameter2 = diameter * diameter
     scratch = np.empty(27, dtype=np.int64)
     count[:] = 0
