@@ -632,7 +632,8 @@ def fig09(inputs, settings, log):
     Parameters
     ----------
     inputs : dict
-        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds ``surface``, ``pores``, ``chords``).
+        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds
+        ``surface``, ``pores``, ``chords``).
     settings : dict
         ``a`` (pixels), ``radius`` (pixels), ``phi2``.
     log : logging.Logger
@@ -652,7 +653,8 @@ def fig10(inputs, settings, log):
     Parameters
     ----------
     inputs : dict
-        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds ``surface``, ``pores``, ``chords``).
+        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds
+        ``surface``, ``pores``, ``chords``).
     settings : dict
         ``a`` (pixels), ``radius`` (pixels), ``phi2``.
     log : logging.Logger
@@ -672,7 +674,8 @@ def fig11(inputs, settings, log):
     Parameters
     ----------
     inputs : dict
-        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds ``surface``, ``pores``, ``chords``).
+        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds
+        ``surface``, ``pores``, ``chords``).
     settings : dict
         ``a`` (pixels), ``radius`` (pixels), ``phi2``.
     log : logging.Logger
@@ -692,7 +695,8 @@ def fig12(inputs, settings, log):
     Parameters
     ----------
     inputs : dict
-        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds ``surface``, ``pores``, ``chords``).
+        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds
+        ``surface``, ``pores``, ``chords``).
     settings : dict
         ``a`` (pixels), ``radius`` (pixels), ``phi2``.
     log : logging.Logger

@@ -240,7 +240,8 @@ def fig06(inputs, settings, log):
     inputs : dict
         ``spectral_{system}``, ``correlation_{system}`` for ``mrj_large`` and ``equilibrium`` (optional).
     settings : dict
-        ``spectral`` (its ``k_max``, units of 1/D) and ``overlapping_phi``: sphere volume fraction of the overlapping spheres (exact curves).
+        ``spectral`` (its ``k_max``, units of 1/D) and ``overlapping_phi``: sphere volume fraction
+        of the overlapping spheres (exact curves).
     log : logging.Logger
         Logger; systems missing from ``inputs`` are reported on it.
 
@@ -449,7 +450,8 @@ def fig09(inputs, settings, log):
     inputs : dict
         ``windows_{system}`` for overlapping, equilibrium, mrj (optional).
     settings : dict
-        ``windows`` (its ``fit_r_min``, units of D: radii drawn as filled Gaussian-regime markers) and ``overlapping_phi`` (for the exact Poisson distribution).
+        ``windows`` (its ``fit_r_min``, units of D: radii drawn as filled Gaussian-regime markers)
+        and ``overlapping_phi`` (for the exact Poisson distribution).
     log : logging.Logger
         Logger; systems missing from ``inputs`` are reported on it.
 
