@@ -23,6 +23,24 @@ def lineal_path_length(z, lineal_path, phi1: float, sem=None, *,
     dominated by the few longest chords). With ``sem`` the fit is weighted and
     its error statistical; without, unweighted (error from the residuals) and
     chi2_per_dof is NaN.
+
+    Parameters
+    ----------
+    z : array_like
+        Segment lengths, shape (n,) (pixels in the Debye workflow).
+    lineal_path : array_like
+        L(z), shape (n,).
+    phi1 : float
+        Volume fraction of the phase whose L is fitted (fixed prefactor).
+    sem : array_like or None
+        SEM of ``lineal_path``, shape (n,); None for an unweighted fit.
+    min_fraction : float
+        Lower cut: points with L(z) < min_fraction * phi1 are left out (default 0.01).
+
+    Returns
+    -------
+    FitResult
+        L_w (length unit of ``z``) with its error, chi2_per_dof and the number of points used.
     """
     z, lineal_path = np.asarray(z, dtype=float), np.asarray(lineal_path, dtype=float)
     weighted = sem is not None
@@ -56,7 +74,27 @@ def r2_over_r(lineal_length: float, phi1: float) -> float:
 def formula_deviation(r, mean, sem, formula, *, r_min: float, r_max: float) -> dict:
     """How a parameter-free formula (Eqs. 24, 26) meets a sample-mean curve on r_min <= r <= r_max:
     chi^2/dof of the SEM-weighted residuals (dof = number of points: nothing is fitted),
-    the largest and the mean relative deviation (curve / formula - 1)."""
+    the largest and the mean relative deviation (curve / formula - 1).
+
+    Parameters
+    ----------
+    r : array_like
+        Radial bin positions, shape (n,).
+    mean : array_like
+        Sample-mean curve, shape (n,).
+    sem : array_like
+        Its SEM, shape (n,); points with sem <= 0 are left out.
+    formula : callable
+        formula(r) -> expected values (the parameter-free formula).
+    r_min, r_max : float
+        Comparison window, inclusive (length unit of ``r``).
+
+    Returns
+    -------
+    dict
+        ``chi2_per_dof``, ``n_points``, ``max_abs_rel_dev``, ``r_at_max`` (the r of that
+        deviation) and ``mean_rel_dev``.
+    """
     r, mean, sem = (np.asarray(v, dtype=float) for v in (r, mean, sem))
     keep = (r >= r_min) & (r <= r_max) & (sem > 0)
     if keep.sum() < 1:
@@ -79,7 +117,24 @@ def logistic_slope(r, curve, *, r_min: float, r_max: float, scale_guess: float) 
     computed F_sv(r) by logistic functions"), with the origin at its midpoint as Eq. (24)
     has it; it is not forced to Eq. (24): A, B and b are free. r_min excludes the bins the
     interface deposit smears. A local polynomial is no alternative: F_sv bends over r ~ a and
-    the slope of a quadratic over [1 px, a] is 25 % below that over [1 px, 2a] on Debye media."""
+    the slope of a quadratic over [1 px, a] is 25 % below that over [1 px, 2a] on Debye media.
+
+    Parameters
+    ----------
+    r : array_like
+        Radial bin positions, shape (n,).
+    curve : array_like
+        F_sv (or another curve) on ``r``, shape (n,).
+    r_min, r_max : float
+        Fit window, inclusive; at least 4 points required.
+    scale_guess : float
+        Initial logistic width b (e.g. a); b is bounded to [0.05, 50] * scale_guess.
+
+    Returns
+    -------
+    float
+        B / (4 b), units of curve / length.
+    """
     r, curve = np.asarray(r, dtype=float), np.asarray(curve, dtype=float)
     keep = (r >= r_min) & (r <= r_max)
     if keep.sum() < 4:
@@ -104,7 +159,28 @@ def pore_size_fit(delta, density, *, p0: float, p2: float | None, sem=None,
     """Fit Eq. (27), P = (p0 + 2 p1 delta) exp(-p1 delta^2 - p2 delta), to a pore-size density
     over 0 <= delta <= delta_max, p0 fixed. With ``p2`` given only p1 is free (the paper's fit,
     p2 = p0 = pi phi2 / a); with ``p2=None`` p2 is free too. Returns (FitResult of p1, p2).
-    Weighted by ``sem`` when given (then chi2_per_dof is meaningful), else unweighted."""
+    Weighted by ``sem`` when given (then chi2_per_dof is meaningful), else unweighted.
+
+    Parameters
+    ----------
+    delta : array_like
+        Pore-size bin positions, shape (n,) (pixels).
+    density : array_like
+        P(delta) on ``delta``, shape (n,).
+    p0 : float
+        Fixed prefactor of Eq. (27) (1/length).
+    p2 : float or None
+        Fixed p2 (1/length), or None to fit it.
+    sem : array_like or None
+        SEM of ``density``, shape (n,); None for an unweighted fit.
+    delta_max : float
+        Upper end of the fit window; at least 4 bins required.
+
+    Returns
+    -------
+    tuple of (FitResult, float)
+        p1 (1/length^2) as a FitResult, and p2 (the fitted value, or ``p2`` as given).
+    """
     delta, density = np.asarray(delta, dtype=float), np.asarray(density, dtype=float)
     weighted = sem is not None
     sem = np.asarray(sem, dtype=float) if weighted else np.ones_like(density)
@@ -137,7 +213,25 @@ def pore_size_fit(delta, density, *, p0: float, p2: float | None, sem=None,
 def p1_polynomial(phi2, p1, p1_err, a: float) -> dict:
     """Weighted least squares of a^2 p1 = c1 phi2 + c2 phi2^2 + c3 phi2^3 (the cubic quoted
     after Eq. 27) with weights 1/(a^2 p1_err)^2. Returns the coefficients, their covariance
-    (from the stated errors, not rescaled) and chi^2/dof (dof = n - 3)."""
+    (from the stated errors, not rescaled) and chi^2/dof (dof = n - 3).
+
+    Parameters
+    ----------
+    phi2 : array_like
+        Volume fractions of phase 2, shape (n,), n >= 3.
+    p1 : array_like
+        Fitted p1 per volume fraction, shape (n,) (1/length^2).
+    p1_err : array_like
+        Standard errors of ``p1``, shape (n,), all > 0.
+    a : float
+        Correlation length of the media (length unit of 1/sqrt(p1)).
+
+    Returns
+    -------
+    dict
+        ``coefficients`` (3,), ``covariance`` (3, 3), ``chi2_per_dof`` (NaN when dof = 0)
+        and ``dof``.
+    """
     phi2, p1, p1_err = (np.asarray(v, dtype=float) for v in (phi2, p1, p1_err))
     if phi2.size < 3:
         raise ValueError("need at least 3 volume fractions for a cubic without constant term")
@@ -157,7 +251,22 @@ def p1_polynomial(phi2, p1, p1_err, a: float) -> dict:
 
 
 def eq27_normalization(p0: float, p1: float, p2: float) -> float:
-    """integral_0^inf of Eq. (27) by quadrature (1 exactly when p0 = p2, for any p1 > 0)."""
+    """integral_0^inf of Eq. (27) by quadrature (1 exactly when p0 = p2, for any p1 > 0).
+
+    Parameters
+    ----------
+    p0 : float
+        Prefactor of Eq. (27) (1/length).
+    p1 : float
+        Quadratic coefficient (1/length^2).
+    p2 : float
+        Linear coefficient (1/length).
+
+    Returns
+    -------
+    float
+        The integral of P(delta) over [0, inf).
+    """
     from scipy.integrate import quad
 
     value, _ = quad(lambda d: (p0 + 2 * p1 * d) * np.exp(-p1 * d * d - p2 * d), 0.0, np.inf,
@@ -176,7 +285,24 @@ def wrapping_crossing(phi2, wraps_phase2, wraps_phase1, n_samples: int) -> tuple
     two bracketing points; its error propagates the binomial errors sqrt(f (1 - f) / n) of
     those two fractions (f clipped to [1/(2n), 1 - 1/(2n)]). Between grid points the curve is
     not measured, so the bracket spacing is the honest resolution. (nan, nan, nan) if the
-    curve never crosses 1/2."""
+    curve never crosses 1/2.
+
+    Parameters
+    ----------
+    phi2 : array_like
+        Volume fractions of phase 2, shape (n,).
+    wraps_phase2 : array_like
+        Fraction of samples in which phase 2 wraps, per ``phi2``, shape (n,).
+    wraps_phase1 : array_like
+        Same for phase 1, shape (n,).
+    n_samples : int
+        Samples per volume fraction (for the binomial errors).
+
+    Returns
+    -------
+    tuple of float
+        (phi2_c, its error, bracket spacing); all NaN without a crossing.
+    """
     phi2 = np.asarray(phi2, dtype=float)
     curve = {}
     for p, f2, f1 in zip(phi2, wraps_phase2, wraps_phase1):
@@ -212,6 +338,21 @@ def surface_pore_fits(systems: dict, *, a: float, fits: dict) -> "xr.Dataset":
     :func:`randmedia.describe.pore_size.pore_size_functions`; ``fits`` is the config
     section ``debye2020.fits``. Values with errors are means and SEMs of per-sample
     quantities; chi^2/dof compare sample-mean curves with SEM-weighted residuals.
+
+    Parameters
+    ----------
+    systems : dict
+        phi2 -> (surface dataset, pore-size dataset), as above.
+    a : float
+        Correlation length of the media (pixels).
+    fits : dict
+        The ``debye2020.fits`` config section (fit windows and thresholds).
+
+    Returns
+    -------
+    xarray.Dataset
+        One row per phi2 (units in each variable's attrs, mostly pixels), the p1 cubic
+        coefficients and covariances, and the percolation crossing in ``attrs``.
     """
     import xarray as xr
 

@@ -56,6 +56,28 @@ def fit_number_variance(R, n_throws, sum_N, sum_N2, *, model: str, r_min: float,
     ``n_throws``, ``sum_N``, ``sum_N2`` have shape (n_samples, n_radii); ``R``
     the radii. ``length`` is the unit the coefficients refer to (e.g. lambda:
     b2 in units of lambda^-2 when the fit is in R / lambda).
+
+    Parameters
+    ----------
+    R : array_like
+        Window radii, shape (n_radii,).
+    n_throws : array_like
+        Windows thrown per sample and radius, shape (n_samples, n_radii), n_samples >= 3.
+    sum_N : array_like
+        Sum of the window counts N, same shape.
+    sum_N2 : array_like
+        Sum of N^2, same shape.
+    model : str
+        ``"b2_b3"`` or ``"b2"`` (module docstring).
+    r_min : float
+        Smallest radius fitted (unit of ``R``).
+    length : float
+        Length unit of the coefficients (default 1: the unit of ``R``).
+
+    Returns
+    -------
+    NumberVarianceFit
+        Coefficients with jackknife errors, chi2_per_dof, points used and r_min.
     """
     if model not in MODELS:
         raise ValueError(f"model must be one of {sorted(MODELS)}, got {model!r}")
@@ -87,5 +109,20 @@ def fit_number_variance(R, n_throws, sum_N, sum_N2, *, model: str, r_min: float,
 
 
 def evaluate(fit: NumberVarianceFit, R, length: float = 1.0) -> np.ndarray:
-    """The fitted polynomial at radii R (same ``length`` unit as the fit)."""
+    """The fitted polynomial at radii R (same ``length`` unit as the fit).
+
+    Parameters
+    ----------
+    fit : NumberVarianceFit
+        A result of :func:`fit_number_variance`.
+    R : array_like
+        Radii, shape (n,).
+    length : float
+        The ``length`` the fit was made with (default 1).
+
+    Returns
+    -------
+    numpy.ndarray
+        sigma^2_N at ``R``, shape (n,).
+    """
     return _design(np.asarray(R, dtype=float) / length, fit.model) @ np.asarray(fit.values)

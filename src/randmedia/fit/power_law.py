@@ -41,7 +41,20 @@ def _inside(a: np.ndarray, a_min: float, a_max: float) -> np.ndarray:
 
 
 def window_mask(a, a_min: float, a_max: float) -> np.ndarray:
-    """Grid points inside [a_min, a_max]; at least 3 are required."""
+    """Grid points inside [a_min, a_max]; at least 3 are required.
+
+    Parameters
+    ----------
+    a : array_like
+        Cap base radii of the grid, shape (K,).
+    a_min, a_max : float
+        Window ends, a_min < a_max (same unit as ``a``).
+
+    Returns
+    -------
+    numpy.ndarray
+        Boolean mask, shape (K,).
+    """
     a = np.asarray(a, dtype=float)
     if not a_min < a_max:
         raise ValueError(f"fit window needs a_min < a_max, got [{a_min:g}, {a_max:g}]")
@@ -72,6 +85,24 @@ def power_law_exponent(a, sigma2, leave_out, *, a_min: float, a_max: float,
 
     ``leave_out``: (B, K) leave-one-block-out curves on the same grid ``a`` (K,);
     ``sem``: SEM of sigma2 (for chi^2/dof; NaN without it).
+
+    Parameters
+    ----------
+    a : array_like
+        Cap base radii, shape (K,).
+    sigma2 : array_like
+        Pooled variance curve, shape (K,).
+    leave_out : array_like
+        Leave-one-block-out curves, shape (B, K).
+    a_min, a_max : float
+        Fit window (unit of ``a``).
+    sem : array_like or None
+        SEM of ``sigma2``, shape (K,), or None.
+
+    Returns
+    -------
+    FitResult
+        delta, its jackknife error, chi2_per_dof (NaN without ``sem``) and the points used.
     """
     a, sigma2 = np.asarray(a, float), np.asarray(sigma2, float)
     leave_out = np.asarray(leave_out, float)
@@ -94,7 +125,24 @@ def power_law_exponent(a, sigma2, leave_out, *, a_min: float, a_max: float,
 
 def window_mean(a, values, leave_out, *, a_min: float, a_max: float) -> FitResult:
     """Mean of ``values`` (e.g. sigma^2/(rho s)) over the window, with the jackknife error
-    from the leave-one-block-out curves (a zero-parameter fit: chi^2/dof is NaN)."""
+    from the leave-one-block-out curves (a zero-parameter fit: chi^2/dof is NaN).
+
+    Parameters
+    ----------
+    a : array_like
+        Cap base radii, shape (K,).
+    values : array_like
+        Curve to average, shape (K,).
+    leave_out : array_like
+        Its leave-one-block-out curves, shape (B, K).
+    a_min, a_max : float
+        Window (unit of ``a``).
+
+    Returns
+    -------
+    FitResult
+        The window mean, its jackknife error, NaN chi2_per_dof and the points used.
+    """
     a, values = np.asarray(a, float), np.asarray(values, float)
     leave_out = np.asarray(leave_out, float)
     mask = window_mask(a, a_min, a_max)
@@ -107,7 +155,28 @@ def window_family_exponents(a, sigma2, *, rho: float, radius: float,
                             a_min_rho_half, a_max_over_R) -> np.ndarray:
     """delta of the pooled curve over every window [m / rho^(1/2), x R] of the family
     (m in ``a_min_rho_half``, x in ``a_max_over_R``); windows with < 3 grid points or
-    sigma^2 <= 0 inside are skipped (module docstring, "Window systematic")."""
+    sigma^2 <= 0 inside are skipped (module docstring, "Window systematic").
+
+    Parameters
+    ----------
+    a : array_like
+        Cap base radii, shape (K,).
+    sigma2 : array_like
+        Pooled variance curve, shape (K,).
+    rho : float
+        Number density (1/length^2).
+    radius : float
+        Sphere radius R.
+    a_min_rho_half : iterable of float
+        Lower window ends in units of rho^(-1/2).
+    a_max_over_R : iterable of float
+        Upper window ends in units of R.
+
+    Returns
+    -------
+    numpy.ndarray
+        delta of each usable window, shape (n_windows,).
+    """
     a, sigma2 = np.asarray(a, float), np.asarray(sigma2, float)
     deltas = []
     for low in a_min_rho_half:
@@ -128,7 +197,25 @@ def sphere_exponents(descriptors: dict, *, a_min_rho_half: float, a_max_over_R: 
     a_max_over_R * R]; delta for both window-centre variants (NaN where a file has only
     random centres), the window mean of sigma^2/(rho s), and the window systematic of
     delta over ``window_family`` ({"a_min_rho_half": [...], "a_max_over_R": [...]}; the
-    main window alone when None; module docstring)."""
+    main window alone when None; module docstring).
+
+    Parameters
+    ----------
+    descriptors : dict
+        System name -> descriptor Dataset (attrs ``R``, ``density``, ``mean_n_points``,
+        ``ensemble``; variables ``sigma2``, ``sigma2_sem``, ``sigma2_jackknife``, ``cap_area``).
+    a_min_rho_half : float
+        Lower end of the main window in units of rho^(-1/2).
+    a_max_over_R : float
+        Upper end of the main window in units of R.
+    window_family : dict or None
+        Windows for the systematic, as above; None: the main window only.
+
+    Returns
+    -------
+    xarray.Dataset
+        One entry per system (dimension ``system``), variables described in their attrs.
+    """
     import xarray as xr
 
     family = window_family or {"a_min_rho_half": [a_min_rho_half], "a_max_over_R": [a_max_over_R]}

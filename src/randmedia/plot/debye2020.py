@@ -37,6 +37,20 @@ def overlapping_disks_s2(inputs, settings, log):
     Top: S2^(1)(r) (mean +- SEM over samples) and the exact curve, with the
     long-range limit phi1^2. Bottom: deviation in units of the SEM, with the
     +-3 SEM band used by the comparison (up to ``compare_r_max``).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``s2``: path of the two-point descriptor file.
+    settings : dict
+        ``radius`` (disk radius R, pixels), ``phi2``, ``compare_r_max`` (pixels).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
     """
     s2 = read_dataset(inputs["s2"], TWO_POINT, attrs=["r_max", "bin_width"])
     radius, phi2, compare_r_max = settings["radius"], settings["phi2"], settings["compare_r_max"]
@@ -71,7 +85,22 @@ PHASE_COLOURS = ("#3b0f70", "#fde725")
 
 
 def fig01(inputs, settings, log):
-    """Fig. 1: one construction per volume fraction (input ``samples``), phase 2 (solid) in yellow."""
+    """Fig. 1: one construction per volume fraction (input ``samples``), phase 2 (solid) in yellow.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``samples``: phase-image files, one per phi2.
+    settings : dict
+        ``a`` (pixels, for the label).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     from matplotlib.colors import ListedColormap
 
     from randmedia.plot.style import PAGE_WIDTH
@@ -94,7 +123,22 @@ def fig01(inputs, settings, log):
 
 def fig02(inputs, settings, log):
     """Fig. 2: S2(r) of the constructions (input ``s2``; dashed, mean over samples) and targets
-    (solid)."""
+    (solid).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``s2``: two-point descriptor files, one per phi2.
+    settings : dict
+        ``lc``: largest r drawn (pixels).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     s2_by_phi2 = _by_phi2(inputs["s2"], TWO_POINT, attrs=("phi2", "a"))
     lc = settings["lc"]
     fig, ax = figure()
@@ -116,7 +160,22 @@ def fig02(inputs, settings, log):
 
 def fig06(inputs, settings, log):
     """Fig. 6: (a) L(z) per phi2 (input ``chords``) with the fit of Eq. (29) (input ``fits``);
-    (b) fitted L_w against phi2."""
+    (b) fitted L_w against phi2.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``chords``: chord descriptor files, one per phi2; ``fits``: the fit dataset (``L_w``).
+    settings : dict
+        ``a`` (pixels; distances are drawn in units of a).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     chords_by_phi2 = _by_phi2(inputs["chords"], CHORDS)
     fits = read_dataset(inputs["fits"])
     a = settings["a"]
@@ -143,7 +202,22 @@ def fig06(inputs, settings, log):
 
 def fig07(inputs, settings, log):
     """Fig. 7: p(z) by direct chord sampling (input ``chords``), with Eq. (31) from the fitted
-    L_w (input ``fits``)."""
+    L_w (input ``fits``).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``chords``: chord descriptor files, one per phi2; ``fits``: the fit dataset (``L_w``).
+    settings : dict
+        ``a`` (pixels).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     chords_by_phi2 = _by_phi2(inputs["chords"], CHORDS)
     fits = read_dataset(inputs["fits"])
     a = settings["a"]
@@ -190,7 +264,22 @@ def _band(ax, x, mean, sem, colour, label=None):
 
 def fig03(inputs, settings, log):
     """Fig. 3: F_sv(r) of the Debye media per phi2 (input ``surface``: mean +- SEM band over
-    samples, level sets tuned to the exact s) and the parameter-free Eq. (24)."""
+    samples, level sets tuned to the exact s) and the parameter-free Eq. (24).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``surface``: surface descriptor files, one per phi2.
+    settings : dict
+        ``a`` (pixels).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     from randmedia.theory.debye_formulas import debye_surface_void
 
     surface_by_phi2 = _by_phi2(inputs["surface"], SURFACE)
@@ -214,7 +303,22 @@ def fig03(inputs, settings, log):
 def fig04(inputs, settings, log):
     """Fig. 4: F_ss(r) of the Debye media per phi2 (input ``surface``: mean +- SEM band) and
     Eq. (26); log scale, since F_ss diverges as s/(pi r) at r -> 0 (bins below 1 pixel,
-    smeared by the interface deposit, are not drawn)."""
+    smeared by the interface deposit, are not drawn).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``surface``: surface descriptor files, one per phi2.
+    settings : dict
+        ``a`` (pixels).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     from randmedia.theory.debye_formulas import debye_surface_surface
 
     surface_by_phi2 = _by_phi2(inputs["surface"], SURFACE)
@@ -239,7 +343,22 @@ def fig04(inputs, settings, log):
 def fig05(inputs, settings, log):
     """Fig. 5: (a) P(delta) phi1/s against delta/a per phi2 (input ``pores``; simulation: mean
     +- SEM band; Eq. (27) with our fitted p1 (input ``fits``): dashed; with the paper's cubic
-    p1: dotted); (b) <delta>/a against phi2 with Eq. (28) (paper's coefficients and ours)."""
+    p1: dotted); (b) <delta>/a against phi2 with Eq. (28) (paper's coefficients and ours).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``pores``: pore-size descriptor files, one per phi2; ``fits``: the fit dataset.
+    settings : dict
+        ``a`` (pixels).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     from randmedia.theory.debye import debye_specific_surface
     from randmedia.theory.debye_formulas import debye_mean_pore_size, pore_p1, pore_size_density
 
@@ -291,7 +410,22 @@ def fig05(inputs, settings, log):
 
 def fig08(inputs, settings, log):
     """Fig. 8: one image per particle-dispersion model at the comparison phi2 (phase 2 yellow):
-    input ``samples``, one file per model, titled by ``settings["titles"]``."""
+    input ``samples``, one file per model, titled by ``settings["titles"]``.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``samples``: phase-image files, one per model.
+    settings : dict
+        ``titles``: one panel title per file.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     from matplotlib.colors import ListedColormap
 
     images = {}
@@ -405,7 +539,22 @@ def overlapping_disks_level_set(inputs, settings, log):
     overlapping disks on tuned level sets (inputs ``surface``, ``pores``), against the exact
     results; bottom row: deviations in units of the SEM with the +-3 band. F_ss is drawn from
     r = 1 px (the bins below are smeared by the interface deposit), F and P while the exact
-    F >= 1e-3."""
+    F >= 1e-3.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``surface``, ``pores``: descriptor files of the digitized disks.
+    settings : dict
+        ``radius`` (disk radius R, pixels), ``phi2``.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     from randmedia.theory.overlapping import (pore_size_complementary_cdf, pore_size_density,
                                               surface_surface, surface_void)
 
@@ -478,22 +627,86 @@ def _section6(number: int, inputs, settings):
 
 
 def fig09(inputs, settings, log):
-    """Fig. 9: chi_V(r), F_sv(r), F_ss(r) of the three models at the comparison phi2, against r s."""
+    """Fig. 9: chi_V(r), F_sv(r), F_ss(r) of the three models at the comparison phi2, against r s.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds
+        ``surface``, ``pores``, ``chords``).
+    settings : dict
+        ``a`` (pixels), ``radius`` (pixels), ``phi2``.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     return _section6(9, inputs, settings)
 
 
 def fig10(inputs, settings, log):
-    """Fig. 10: P(delta) of the three models, against delta s."""
+    """Fig. 10: P(delta) of the three models, against delta s.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds
+        ``surface``, ``pores``, ``chords``).
+    settings : dict
+        ``a`` (pixels), ``radius`` (pixels), ``phi2``.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     return _section6(10, inputs, settings)
 
 
 def fig11(inputs, settings, log):
-    """Fig. 11: L(z) of the three models, against z s."""
+    """Fig. 11: L(z) of the three models, against z s.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds
+        ``surface``, ``pores``, ``chords``).
+    settings : dict
+        ``a`` (pixels), ``radius`` (pixels), ``phi2``.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     return _section6(11, inputs, settings)
 
 
 def fig12(inputs, settings, log):
-    """Fig. 12: p(z) of the three models, against z s."""
+    """Fig. 12: p(z) of the three models, against z s.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``{model}_{kind}`` descriptor files (models ``media``, ``disks``, ``hard``; kinds
+        ``surface``, ``pores``, ``chords``).
+    settings : dict
+        ``a`` (pixels), ``radius`` (pixels), ``phi2``.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
+    """
     return _section6(12, inputs, settings)
 
 

@@ -13,7 +13,31 @@ def eos_validation_figure(frame, pooled: dict, settings, *, dim: int, phi: float
     """(a) g(r) near contact from the pooled pair counts, the fitted polynomial and the EOS
     contact values; (b) per-sample contact-value pressure with the EOS values; (c) MSD
     between consecutive samples of each chain against the required minimum; (d) when the
-    frame has bond order (3D): global Q6 and crystal-like fraction per sample."""
+    frame has bond order (3D): global Q6 and crystal-like fraction per sample.
+
+    Parameters
+    ----------
+    frame : pandas.DataFrame
+        One row per sample: ``sample``, ``reduced_pressure``, ``msd_since_previous`` (units of
+        D^2) and, in 3D, ``global_q6`` and ``crystalline_fraction``.
+    pooled : dict
+        Pooled pair counts near contact: ``histogram``, ``box``, ``diameter``, ``n_particles``,
+        ``measurements``, ``coefficients`` (polynomial in r/D - 1) and ``contact_value``.
+    settings : randmedia.generate.hard_particles.settings.MCSettings
+        The chain's settings; ``contact_range`` is the histogram's range beyond r = D (units of D).
+    dim : int
+        Dimension, 2 or 3.
+    phi : float
+        Packing fraction of the chain.
+    eos_names : dict
+        Equation-of-state name -> legend label, for the reference lines.
+    sample_msd : float
+        Required minimum MSD between samples (units of D^2).
+    title : str
+        Figure title.
+    pdf_path : str or os.PathLike
+        Output ``.pdf`` path; the PNG is written beside it.
+    """
     bond_order = "global_q6" in frame
     if bond_order:
         fig, axes = figure(2, 2, width=PAGE_WIDTH, aspect=0.6)

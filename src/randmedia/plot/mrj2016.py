@@ -130,27 +130,102 @@ def _correlation_figure(inputs, settings, log, *, which):
 
 
 def fig03(inputs, settings, log):
-    """Fig. 3: S2(r)."""
+    """Fig. 3: S2(r).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``correlation_equilibrium``, ``correlation_mrj``: merged correlation files (optional).
+    settings : dict
+        ``overlapping_phi``: sphere volume fraction of the overlapping spheres (exact curves).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     return _correlation_figure(inputs, settings, log, which="S2")
 
 
 def fig04(inputs, settings, log):
-    """Fig. 4: F_sv(r)/s."""
+    """Fig. 4: F_sv(r)/s.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``correlation_equilibrium``, ``correlation_mrj``: merged correlation files (optional).
+    settings : dict
+        ``overlapping_phi``: sphere volume fraction of the overlapping spheres (exact curves).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     return _correlation_figure(inputs, settings, log, which="Fsv")
 
 
 def fig05(inputs, settings, log):
-    """Fig. 5: F_ss(r)/s^2 (insets at r = 2D)."""
+    """Fig. 5: F_ss(r)/s^2 (insets at r = 2D).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``correlation_equilibrium``, ``correlation_mrj``: merged correlation files (optional).
+    settings : dict
+        ``overlapping_phi``: sphere volume fraction of the overlapping spheres (exact curves).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     return _correlation_figure(inputs, settings, log, which="Fss")
 
 
 def fig12(inputs, settings, log):
-    """Fig. 12: two-body F*_sv(r)/s with the contact slope (Eq. B3)."""
+    """Fig. 12: two-body F*_sv(r)/s with the contact slope (Eq. B3).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``correlation_equilibrium``, ``correlation_mrj``: merged correlation files (optional).
+    settings : dict
+        ``overlapping_phi``: sphere volume fraction of the overlapping spheres (exact curves).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     return _correlation_figure(inputs, settings, log, which="Fsv2")
 
 
 def fig13(inputs, settings, log):
-    """Fig. 13: two-body F*_ss(r)/s^2 with the contact value (Eq. B4; insets at r = D)."""
+    """Fig. 13: two-body F*_ss(r)/s^2 with the contact value (Eq. B4; insets at r = D).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``correlation_equilibrium``, ``correlation_mrj``: merged correlation files (optional).
+    settings : dict
+        ``overlapping_phi``: sphere volume fraction of the overlapping spheres (exact curves).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     return _correlation_figure(inputs, settings, log, which="Fss2")
 
 
@@ -158,7 +233,23 @@ def fig13(inputs, settings, log):
 
 
 def fig06(inputs, settings, log):
-    """Fig. 6: spectral densities -- overlapping (bottom), liquid (centre), MRJ (top)."""
+    """Fig. 6: spectral densities -- overlapping (bottom), liquid (centre), MRJ (top).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``spectral_{system}``, ``correlation_{system}`` for ``mrj_large`` and ``equilibrium`` (optional).
+    settings : dict
+        ``spectral`` (its ``k_max``, units of 1/D) and ``overlapping_phi``: sphere volume fraction
+        of the overlapping spheres (exact curves).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from randmedia.describe.spectral import form_factor_zeros, overlapping_spectral_density
 
     k_max = settings["spectral"]["k_max"]
@@ -226,7 +317,22 @@ def _liquid_pore_theory(phi, log):
 
 
 def fig07(inputs, settings, log):
-    """Fig. 7: complementary cumulative pore-size distribution F(delta) (inset: MRJ by phi)."""
+    """Fig. 7: complementary cumulative pore-size distribution F(delta) (inset: MRJ by phi).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``points_{system}`` for overlapping, equilibrium, mrj, fcc, bcc (optional).
+    settings : dict
+        ``overlapping_phi``: sphere volume fraction of the overlapping spheres (exact curves).
+    log : logging.Logger
+        Logger for missing systems and for a skipped MRJ inset.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from randmedia.theory.overlapping import pore_size_complementary_cdf
 
     fig, ax = figure(aspect=0.8)
@@ -283,7 +389,22 @@ def fig07(inputs, settings, log):
 
 
 def fig08(inputs, settings, log):
-    """Fig. 8: exclusion probability E_V(r) of the centres at unit density (r in lambda)."""
+    """Fig. 8: exclusion probability E_V(r) of the centres at unit density (r in lambda).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``points_{system}`` for overlapping, equilibrium, mrj, fcc, bcc (optional).
+    settings : dict
+        ``overlapping_phi``: sphere volume fraction of the overlapping spheres (their density).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from randmedia.theory.overlapping import exclusion_probability, number_density
 
     fig, ax = figure(aspect=0.8)
@@ -322,7 +443,23 @@ def fig08(inputs, settings, log):
 
 
 def fig09(inputs, settings, log):
-    """Fig. 9: number distributions rescaled by sigma_N against the standard normal."""
+    """Fig. 9: number distributions rescaled by sigma_N against the standard normal.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``windows_{system}`` for overlapping, equilibrium, mrj (optional).
+    settings : dict
+        ``windows`` (its ``fit_r_min``, units of D: radii drawn as filled Gaussian-regime markers)
+        and ``overlapping_phi`` (for the exact Poisson distribution).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from scipy.stats import norm, poisson
 
     from randmedia.theory.overlapping import number_density
@@ -367,7 +504,22 @@ def fig09(inputs, settings, log):
 
 
 def fig10(inputs, settings, log):
-    """Fig. 10: number variance sigma_N^2(R) against R/lambda with the fits b2 R^2 + b3 R^3 and R^2."""
+    """Fig. 10: number variance sigma_N^2(R) against R/lambda with the fits b2 R^2 + b3 R^3 and R^2.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``windows_{system}`` for overlapping, equilibrium, mrj (optional).
+    settings : dict
+        ``windows`` (its ``fit_r_min``, units of D: start of the fitted curves).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from randmedia.fit.number_variance import MODELS
 
     fig, ax = figure(aspect=0.85)
@@ -416,7 +568,28 @@ def fig10(inputs, settings, log):
 
 def render_spheres(positions, box, side: float, pixels: int = 360, diameter: float = 1.0):
     """Shaded orthographic image (z-buffer of sphere caps) of the spheres centred in the cube
-    [0, side]^3 (periodic images included), viewed along -z; returns an (pixels, pixels, 3) array."""
+    [0, side]^3 (periodic images included), viewed along -z; returns (shade, hit, side).
+
+    Parameters
+    ----------
+    positions : numpy.ndarray
+        Sphere centres, shape (n, 3), in the units of ``box``.
+    box : array_like
+        Periodic cell, as accepted by :class:`randmedia.periodic.Cell`.
+    side : float
+        Edge of the rendered cube; clipped to the cell's smallest face distance.
+    pixels : int
+        Image size in pixels per edge (default 360).
+    diameter : float
+        Sphere diameter D (default 1).
+
+    Returns
+    -------
+    tuple
+        (shade, hit, side): shade, float array (pixels, pixels) of grey levels in [0, 1];
+        hit, bool array (pixels, pixels), True where a sphere is seen; side, the edge used.
+        Both arrays are oriented for ``imshow`` (first row at the top, y = side).
+    """
     from randmedia.periodic import Cell, padded_images
 
     cell = Cell(box)
@@ -450,7 +623,22 @@ def render_spheres(positions, box, side: float, pixels: int = 360, diameter: flo
 
 
 def fig01(inputs, settings, log):
-    """Fig. 1: renderings of (a) overlapping spheres, (b) the liquid, (c) an MRJ packing."""
+    """Fig. 1: renderings of (a) overlapping spheres, (b) the liquid, (c) an MRJ packing.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``config_{system}`` for overlapping, equilibrium, mrj (optional).
+    settings : dict
+        ``figures`` (its ``render_side``: side of the rendered cube in D, default 8).
+    log : logging.Logger
+        Logger; systems missing from ``inputs`` are reported on it.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from randmedia.plot.style import PAGE_WIDTH
     from randmedia.studies.mrj2016 import load_configuration
 
@@ -484,7 +672,22 @@ def _disk_configuration(rng, n, side, diameter):
 
 
 def fig02(inputs, settings, log):
-    """Fig. 2: events behind the descriptors of Table I: (a) two-phase medium, (b) point process."""
+    """Fig. 2: events behind the descriptors of Table I: (a) two-phase medium, (b) point process.
+
+    Parameters
+    ----------
+    inputs : dict
+        Unused (schematic).
+    settings : dict
+        Unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from matplotlib.patches import Circle, FancyArrowPatch
 
     from randmedia.plot.style import PAGE_WIDTH
@@ -539,7 +742,22 @@ def fig02(inputs, settings, log):
 
 
 def fig11(inputs, settings, log):
-    """Fig. 11: section through B_R(c_j) and the test sphere B_r(x) (Eqs. A2-A5)."""
+    """Fig. 11: section through B_R(c_j) and the test sphere B_r(x) (Eqs. A2-A5).
+
+    Parameters
+    ----------
+    inputs : dict
+        Unused (schematic).
+    settings : dict
+        Unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from matplotlib.patches import Arc, Circle
 
     fig, ax = figure(aspect=0.8, width=COLUMN_WIDTH * 0.8)

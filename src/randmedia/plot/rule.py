@@ -28,6 +28,15 @@ def draw_rule_figure(figures: dict, snakemake, log) -> None:
 
     ``inputs`` are the rule's named inputs except ``code`` (a path, or a list of paths for a
     list input); ``settings`` is ``snakemake.params.settings`` (empty if the rule has none).
+
+    Parameters
+    ----------
+    figures : dict
+        The plot module's ``FIGURES`` registry, key -> figure function.
+    snakemake : snakemake.script.Snakemake
+        The rule's ``snakemake`` object (``params.figure``, ``params.settings``, ``input``, ``output``).
+    log : logging.Logger
+        The job's logger, passed to the figure function.
     """
     key = snakemake.params.figure
     if key not in figures:

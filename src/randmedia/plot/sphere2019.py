@@ -40,7 +40,25 @@ def render_sphere(ax, points: np.ndarray, radius: float, *, size: float = 4.0, c
                   title: str | None = None, diameter: float | None = None) -> None:
     """Orthographic view of the points on the near hemisphere of the sphere of radius R;
     with ``diameter``, particles are drawn as disks of that diameter (length unit of R),
-    foreshortened towards the rim."""
+    foreshortened towards the rim.
+
+    Parameters
+    ----------
+    ax : matplotlib.axes.Axes
+        Axes to draw into (turned off; limits set to the unit disk).
+    points : numpy.ndarray
+        Points on the sphere, shape (n, 3), in the length unit of ``radius``.
+    radius : float
+        Sphere radius R.
+    size : float
+        Marker area of the scatter points (points^2, scaled down with depth; default 4).
+    colour : str
+        Matplotlib colour of the points (default ``"C0"``).
+    title : str or None
+        Axes title; None for none.
+    diameter : float or None
+        Particle diameter (length unit of R) to draw disks instead of points; None: points.
+    """
     from matplotlib.collections import EllipseCollection
     from matplotlib.colors import to_rgba
 
@@ -115,7 +133,22 @@ def _cap_variances(paths) -> list[xr.Dataset]:
 
 
 def fig01(inputs, settings, log):
-    """Fig. 1: the spherical-cap window of arc length x, area s and base radius a (no inputs)."""
+    """Fig. 1: the spherical-cap window of arc length x, area s and base radius a (no inputs).
+
+    Parameters
+    ----------
+    inputs : dict
+        Unused (schematic).
+    settings : dict
+        Unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from matplotlib.patches import Arc, Polygon
 
     fig, ax = figure(aspect=0.9)
@@ -162,7 +195,22 @@ def fig01(inputs, settings, log):
 
 def fig02(inputs, settings, log):
     """Fig. 2: (a) icosahedral (Tegmark) grid, (b) Fibonacci grid (inputs ``configs`` and
-    ``descriptors``, in this order), (c) sigma^2/(rho s) vs a rho^(1/2), inset sigma^2 vs a."""
+    ``descriptors``, in this order), (c) sigma^2/(rho s) vs a rho^(1/2), inset sigma^2 vs a.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``configs``: [icosahedral, Fibonacci] configuration files; ``descriptors``: their descriptor files, same order.
+    settings : dict
+        Unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     ico_points, fib_points = _first_frames(inputs["configs"])
     ico, fib = _cap_variances(inputs["descriptors"])
     fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=1.0,
@@ -192,7 +240,22 @@ def fig02(inputs, settings, log):
 def fig03(inputs, settings, log):
     """Fig. 3: (a) Poisson and (b) uniform configurations (inputs ``configs`` and ``descriptors``,
     in this order); (c) sigma^2/(rho s) vs a/R with Eq. (6) (uniform, canonical) and Eq. (7)
-    (Poisson, grand canonical)."""
+    (Poisson, grand canonical).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``configs``: [Poisson, uniform] configuration files; ``descriptors``: their descriptor files, same order.
+    settings : dict
+        Unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     from matplotlib.gridspec import GridSpec
 
     poisson_points, uniform_points = _first_frames(inputs["configs"])
@@ -258,7 +321,22 @@ def _both_readings(draw, printed, alpha_cubed, **kwargs) -> dict:
 def fig04(inputs, settings, log):
     """Fig. 4: sigma^2/(rho s) vs a rho^(1/2) of the R = 15 fluids (input ``descriptors``;
     a >= settings["a_min"]); inset: the normalized sigma^2*(a) = sigma^2(a)/sigma^2(R) vs a
-    with references ~a and ~a^2."""
+    with references ~a and ~a^2.
+
+    Parameters
+    ----------
+    inputs : dict
+        ``descriptors``: descriptor files of the R = 15 fluids.
+    settings : dict
+        ``a_min``: smallest cap base radius drawn (length unit of R).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The figure.
+    """
     descriptors, a_min = _fluids(inputs["descriptors"]), settings["a_min"]
     fig, ax = figure(aspect=0.8)
     inset = ax.inset_axes([0.55, 0.52, 0.42, 0.42])
@@ -289,7 +367,22 @@ def fig04(inputs, settings, log):
 
 def fig05(inputs, settings, log):
     """Fig. 5: sigma^2/(rho s) vs a rho^(1/2) at R = 5 for U_dd|| with alpha = 1, 3, 6, for both
-    readings of Eq. (12b)."""
+    readings of Eq. (12b).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``descriptors``, ``alpha_cubed``: descriptor files of the R = 5 fluids for the two readings of Eq. (12b).
+    settings : dict
+        ``a_min``: smallest cap base radius drawn (length unit of R).
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    dict
+        ``{"pdf": figure for Eq. (12b) as printed, "alpha_cubed_pdf": figure for its second reading}``.
+    """
     return _both_readings(_fig05_alpha, _fluids(inputs["descriptors"]), _fluids(inputs["alpha_cubed"]),
                           a_min=settings["a_min"])
 
@@ -324,7 +417,22 @@ def _snapshots(paths) -> dict[str, tuple[np.ndarray, float, str]]:
 
 def fig06(inputs, settings, log):
     """Fig. 6: snapshots for alpha = 1, 3, 6 (input ``configs``; ``alpha_cubed`` for the second
-    reading of Eq. 12b)."""
+    reading of Eq. 12b).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``configs``, ``alpha_cubed``: configuration files (alpha = 1, 3, 6) for the two readings of Eq. (12b).
+    settings : dict
+        Unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    dict
+        ``{"pdf": figure for Eq. (12b) as printed, "alpha_cubed_pdf": figure for its second reading}``.
+    """
     return _both_readings(_fig06_snapshots, _snapshots(inputs["configs"]),
                           _snapshots(inputs["alpha_cubed"]))
 
@@ -340,7 +448,22 @@ def _fig06_snapshots(snapshots: dict[str, tuple[np.ndarray, float, str]]):
 
 
 def fig07(inputs, settings, log):
-    """Fig. 7: geodesic g2(x) at R = 5 for increasing repulsion, for both readings of Eq. (12b)."""
+    """Fig. 7: geodesic g2(x) at R = 5 for increasing repulsion, for both readings of Eq. (12b).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``descriptors``, ``alpha_cubed``: descriptor files of the fluids for the two readings of Eq. (12b).
+    settings : dict
+        Unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    dict
+        ``{"pdf": figure for Eq. (12b) as printed, "alpha_cubed_pdf": figure for its second reading}``.
+    """
     return _both_readings(_fig07_g2, _fluids(inputs["descriptors"]), _fluids(inputs["alpha_cubed"]))
 
 
@@ -361,7 +484,22 @@ def _fig07_g2(descriptors: dict[str, xr.Dataset]):
 
 def fig08(inputs, settings, log):
     """Fig. 8: sigma^2/(rho s) from g2 by Eq. (4) (solid) against the direct window counts
-    (dotted), R = 5, for both readings of Eq. (12b)."""
+    (dotted), R = 5, for both readings of Eq. (12b).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``descriptors``, ``alpha_cubed``: descriptor files of the fluids for the two readings of Eq. (12b).
+    settings : dict
+        Unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    dict
+        ``{"pdf": figure for Eq. (12b) as printed, "alpha_cubed_pdf": figure for its second reading}``.
+    """
     return _both_readings(_fig08_from_g2, _fluids(inputs["descriptors"]), _fluids(inputs["alpha_cubed"]))
 
 

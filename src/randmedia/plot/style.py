@@ -44,7 +44,24 @@ STYLE = {
 
 def figure(ncols: int = 1, nrows: int = 1, *, width: float = COLUMN_WIDTH, aspect: float = 0.75,
            **subplot_kwargs):
-    """A new figure in the project style; returns (fig, axes)."""
+    """A new figure in the project style; returns (fig, axes).
+
+    Parameters
+    ----------
+    ncols, nrows : int
+        Grid of axes (default 1 x 1).
+    width : float
+        Figure width in inches (default :data:`COLUMN_WIDTH`).
+    aspect : float
+        Height / width of one panel; the figure height is width * aspect * nrows / ncols.
+    **subplot_kwargs
+        Passed to :func:`matplotlib.pyplot.subplots` (e.g. ``sharex``, ``gridspec_kw``).
+
+    Returns
+    -------
+    tuple
+        (fig, axes) as returned by :func:`matplotlib.pyplot.subplots`.
+    """
     plt.rcParams.update(STYLE)
     height = width * aspect * nrows / ncols
     return plt.subplots(nrows, ncols, figsize=(width, height), **subplot_kwargs)

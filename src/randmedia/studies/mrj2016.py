@@ -92,6 +92,27 @@ def correlation_samples(configs: Sequence, *, r_step: float, r_max: float, conta
 
     Grid r = 0, r_step, ... <= r_max; a sample's values are NaN where r >= h_w - D
     of its cell (Eq. A8), so that samples of different cells share one grid.
+
+    Parameters
+    ----------
+    configs : sequence of (positions, box, diameter)
+        Configurations in units of D: positions (n, 3), box (3, 3), diameter.
+    r_step : float
+        Spacing of the r grid (D).
+    r_max : float
+        Largest r of the grid (D).
+    contact_r : float
+        Gap below which two spheres count as in contact for ``n_within`` (D).
+    first : int
+        Index of the first sample (the ``sample`` coordinate starts there; default 0).
+    progress : Progress or None
+        Stepped once per configuration; None for no progress log.
+
+    Returns
+    -------
+    xarray.Dataset
+        Variables on (sample, r) and per-sample scalars, units in their attrs; attrs ``kind`` =
+        "correlation" and ``contact_r``.
     """
     r = np.arange(int(math.floor(r_max / r_step + 1e-9)) + 1) * r_step
     out = {name: [] for name in packings.CORRELATION_VARIABLES}
@@ -171,6 +192,38 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
     cubic cell's shells that the labels round, see spectral.snap_to_shells). ``bragg``
     (optional): expected Bragg wavevector magnitudes of a lattice; then the
     number of wavevectors with S > N/2 and the extreme S values are recorded.
+
+    Parameters
+    ----------
+    configs : sequence of (positions, box, diameter)
+        Configurations in units of D.
+    k_max : float
+        Largest wavenumber (1/D).
+    bin_width : float
+        Width of the fine |k| bins (1/D).
+    table_k : array_like
+        Tabulated kD of the paper's tables; empty for none.
+    table_width : float or None
+        Width of the table bins (1/D); None: ``bin_width``.
+    eps : float
+        NUFFT tolerance of :func:`randmedia.describe.spectral.structure_factor` (default 1e-9).
+    nthreads : int
+        NUFFT threads (default 1).
+    first : int
+        Index of the first sample (default 0).
+    bragg : int or None
+        Expected number of Bragg wavevectors of a lattice up to k_max (stored as attr
+        ``expected_peaks``); None for a disordered system.
+    snap_table : bool
+        Centre the table bins on the cubic cell's shells (default False).
+    progress : Progress or None
+        Stepped once per configuration.
+
+    Returns
+    -------
+    xarray.Dataset
+        Per-sample binned chi and S on (sample, k), table values on (sample, k_table) when
+        ``table_k`` is given, peak statistics per sample; units in the variables' attrs.
     """
     edges = np.arange(0.0, k_max + 0.5 * bin_width, bin_width)
     edges = edges[edges <= k_max + 1e-12]
@@ -254,6 +307,34 @@ def points_samples(configs: Sequence, rngs: Sequence[np.random.Generator], *, n_
 
     ``covering=False`` skips the exact covering radius (NaN), e.g. for Poisson
     centres, where it is a property of the finite sample only.
+
+    Parameters
+    ----------
+    configs : sequence of (positions, box, diameter)
+        Configurations in units of D.
+    rngs : sequence of numpy.random.Generator
+        One generator per configuration.
+    n_matrix_points : int
+        Uniform points are drawn until this many lie in the matrix (d > R).
+    bin_width : float
+        Width of the distance histogram (D); the sphere radius must be a multiple of it.
+    d_max : float
+        Range of the histogram (D); farther distances count as ``overflow``.
+    batch : int
+        Points drawn per batch (default 1 000 000).
+    first : int
+        Index of the first sample (default 0).
+    covering : bool
+        Compute the exact covering radius (default True); False stores NaN.
+    log : logging.Logger or None
+        Logs one line per sample when given.
+    progress : Progress or None
+        Stepped once per configuration.
+
+    Returns
+    -------
+    xarray.Dataset
+        E_V on (sample, r), F on (sample, delta) and per-sample scalars, units in their attrs.
     """
     edges = points.distance_bins(bin_width, d_max)
     E_V, F, rows = [], [], []
@@ -300,7 +381,22 @@ def points_samples(configs: Sequence, rngs: Sequence[np.random.Generator], *, n_
 
 
 def window_radii(half_width: float, step: float, extra=()) -> np.ndarray:
-    """Uniform radii step, 2 step, ... <= h_w, united with ``extra`` (those <= h_w)."""
+    """Uniform radii step, 2 step, ... <= h_w, united with ``extra`` (those <= h_w).
+
+    Parameters
+    ----------
+    half_width : float
+        h_w, the largest radius (D).
+    step : float
+        Grid spacing (D).
+    extra : array_like
+        Further radii to include (those > h_w are dropped).
+
+    Returns
+    -------
+    numpy.ndarray
+        Sorted unique radii (rounded to 12 decimals), shape (n,).
+    """
     grid = np.arange(1, int(math.floor(half_width / step + 1e-9)) + 1) * step
     extra = np.asarray(extra, dtype=float)
     return np.unique(np.round(np.concatenate([grid, extra[extra <= half_width]]), 12))
@@ -315,6 +411,31 @@ def windows_samples(configs: Sequence, rngs: Sequence[np.random.Generator], *, r
     chunk; a sample uses those <= its own h_w (others: zero throws). Stored
     per sample and radius: throws, sum N, sum N^2; and at each ``fR_radii``
     (<= h_w) the distribution of N (Fig. 9).
+
+    Parameters
+    ----------
+    configs : sequence of (positions, box, diameter)
+        Configurations in units of D.
+    rngs : sequence of numpy.random.Generator
+        One generator per configuration (window centres).
+    radius_step : float
+        Spacing of the radius grid (D).
+    fR_radii : array_like
+        Radii (D) at which the count distribution f_R(N) is stored.
+    phi_B : float
+        Fraction in (0, 1] of the cell volume the windows of one radius may cover in total
+        (:func:`randmedia.describe.points.throws_per_radius`).
+    max_windows : int
+        Largest number of windows per radius and sample.
+    first : int
+        Index of the first sample (default 0).
+    progress : Progress or None
+        Stepped once per configuration.
+
+    Returns
+    -------
+    xarray.Dataset
+        n_throws, sum_N ... sum_N4 on (sample, R), count_hist on (sample, R_f, N), per-sample scalars.
     """
     from randmedia.periodic import Cell
 
@@ -377,7 +498,35 @@ def describe(kind: str, system: str, configs: Sequence, *, first: int, seed: int
     of ``system``, with the config values it used. Only the kind's own sections are needed
     (:data:`KIND_SETTINGS`; ``table_k`` for spectral); the others are ignored. Monte Carlo
     kinds draw from one generator per sample, seeded from
-    (seed, "mrj2016", f"{system}/{kind}", sample index)."""
+    (seed, "mrj2016", f"{system}/{kind}", sample index).
+
+    Parameters
+    ----------
+    kind : str
+        One of :data:`KINDS`.
+    system : str
+        System name (e.g. ``"mrj"``, ``"fcc"``); keys the seeds and selects the Bragg count (fcc, bcc),
+        table snapping (equilibrium) and the covering radius (all but overlapping).
+    configs : sequence of (positions, box, diameter)
+        The chunk's configurations, in units of D.
+    first : int
+        Sample index of ``configs[0]``.
+    seed : int or None
+        Base seed (points, windows).
+    descriptors, spectral, pores, windows : dict or None
+        Config sections (correlation, spectral, points, windows kinds).
+    table_k : array_like
+        Tabulated kD of the paper (spectral).
+    nthreads : int
+        NUFFT threads (spectral; default 1).
+    log : logging.Logger or None
+        Logger for progress and per-sample lines.
+
+    Returns
+    -------
+    tuple of (xarray.Dataset, dict)
+        The per-sample dataset and the config values used.
+    """
     from randmedia.seeding import sample_rng, sample_seed
 
     if kind not in KINDS:
@@ -475,6 +624,22 @@ def summarize(chunks: Iterable[xr.Dataset], kind: str, *, spectral: dict | None 
     * spectral, points: concatenation, mean and SEM.
 
     ``spectral`` (only its ``k_max``) is needed for correlation, ``windows`` for windows.
+
+    Parameters
+    ----------
+    chunks : iterable of xarray.Dataset
+        Per-sample chunk datasets of one system and kind.
+    kind : str
+        Their descriptor kind (one of :data:`KINDS`).
+    spectral : dict or None
+        The spectral config section (``k_max``, 1/D); needed for ``"correlation"``.
+    windows : dict or None
+        The windows config section (``fit_r_min``, D); needed for ``"windows"``.
+
+    Returns
+    -------
+    xarray.Dataset
+        The merged dataset, with the mean / SEM curves and the kind's summaries.
     """
     needed = {"correlation": ("spectral", spectral), "windows": ("windows", windows)}.get(kind)
     if needed is not None and needed[1] is None:

@@ -11,7 +11,22 @@ import numpy as np
 
 
 def debye_s2(r, phi2: float, a: float) -> np.ndarray:
-    """S2 of phase 2 of Debye random media, Eq. (21): phi2^2 + phi1 phi2 exp(-r/a)."""
+    """S2 of phase 2 of Debye random media, Eq. (21): phi2^2 + phi1 phi2 exp(-r/a).
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distances (same length unit as ``a``).
+    phi2 : float
+        Volume fraction of phase 2, in (0, 1).
+    a : float
+        Correlation length of Eq. (21), > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        S2(r) of phase 2, same shape as ``r``.
+    """
     if not 0.0 < phi2 < 1.0:
         raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
     if a <= 0:

@@ -25,7 +25,22 @@ def _check(phi2: float, a: float) -> None:
 
 def debye_surface_void(r, phi2: float, a: float) -> np.ndarray:
     """Eqs. (24)-(25): F_sv(r) = s (1 - phi2 + phi2 e^{-r/a}) / (1 + e^{-r/a}), s of Eq. (22);
-    F_sv(0) = s/2, F_sv(inf) = s phi1 (void = phase 1)."""
+    F_sv(0) = s/2, F_sv(inf) = s phi1 (void = phase 1).
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distances (same length unit as ``a``).
+    phi2 : float
+        Volume fraction of phase 2, in (0, 1).
+    a : float
+        Correlation length of Eq. (21), > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        F_sv(r) (units 1/length), same shape as ``r``.
+    """
     _check(phi2, a)
     decay = np.exp(-np.asarray(r, dtype=float) / a)
     return debye_specific_surface(phi2, a) * (1.0 - phi2 + phi2 * decay) / (1.0 + decay)
@@ -33,7 +48,22 @@ def debye_surface_void(r, phi2: float, a: float) -> np.ndarray:
 
 def debye_surface_surface(r, phi2: float, a: float) -> np.ndarray:
     """Eq. (26): F_ss(r) = (pi^2/a^2) phi1^2 phi2^2 + phi1 phi2 e^{-r/a} / (a r)
-    + e^{-r/a} |phi2 - phi1| / (2 a^2 (1 + e^{-r/a})); diverges as s/(pi r) at r -> 0."""
+    + e^{-r/a} |phi2 - phi1| / (2 a^2 (1 + e^{-r/a})); diverges as s/(pi r) at r -> 0.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distances (same length unit as ``a``); r = 0 gives inf.
+    phi2 : float
+        Volume fraction of phase 2, in (0, 1).
+    a : float
+        Correlation length of Eq. (21), > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        F_ss(r) (units 1/length^2), same shape as ``r``.
+    """
     _check(phi2, a)
     r = np.asarray(r, dtype=float)
     q = phi2 * (1.0 - phi2)
@@ -56,7 +86,22 @@ P1_COEFFICIENTS = (1.05, -2.41, 4.16)
 
 
 def pore_p1(phi2, a: float, coefficients=P1_COEFFICIENTS):
-    """p1 of Eq. (27) from the cubic (c1 phi2 + c2 phi2^2 + c3 phi2^3) / a^2."""
+    """p1 of Eq. (27) from the cubic (c1 phi2 + c2 phi2^2 + c3 phi2^3) / a^2.
+
+    Parameters
+    ----------
+    phi2 : float or array_like
+        Volume fraction(s) of phase 2.
+    a : float
+        Correlation length of Eq. (21).
+    coefficients : tuple of float
+        (c1, c2, c3) of the cubic; default :data:`P1_COEFFICIENTS` (the paper's fit).
+
+    Returns
+    -------
+    float or numpy.ndarray
+        p1 (units 1/length^2), shape of ``phi2``.
+    """
     phi2 = np.asarray(phi2, dtype=float)
     c1, c2, c3 = coefficients
     return (c1 * phi2 + c2 * phi2**2 + c3 * phi2**3) / (a * a)
@@ -64,13 +109,45 @@ def pore_p1(phi2, a: float, coefficients=P1_COEFFICIENTS):
 
 def pore_size_ccdf(delta, p1: float, p2: float) -> np.ndarray:
     """F(delta) = exp(-p1 delta^2 - p2 delta): the complementary cumulative distribution whose
-    density -dF/ddelta is Eq. (27) with p0 = p2 (the only normalized choice, F(0) = 1)."""
+    density -dF/ddelta is Eq. (27) with p0 = p2 (the only normalized choice, F(0) = 1).
+
+    Parameters
+    ----------
+    delta : float or array_like
+        Pore sizes (length).
+    p1 : float
+        Quadratic coefficient of the exponent (1/length^2).
+    p2 : float
+        Linear coefficient of the exponent (1/length).
+
+    Returns
+    -------
+    numpy.ndarray
+        F(delta), same shape as ``delta``.
+    """
     delta = np.asarray(delta, dtype=float)
     return np.exp(-p1 * delta * delta - p2 * delta)
 
 
 def pore_size_density(delta, p0: float, p1: float, p2: float) -> np.ndarray:
-    """Eq. (27): P(delta) = (p0 + 2 p1 delta) exp(-p1 delta^2 - p2 delta)."""
+    """Eq. (27): P(delta) = (p0 + 2 p1 delta) exp(-p1 delta^2 - p2 delta).
+
+    Parameters
+    ----------
+    delta : float or array_like
+        Pore sizes (length).
+    p0 : float
+        Prefactor of Eq. (27) (1/length); p0 = p2 normalizes the density.
+    p1 : float
+        Quadratic coefficient of the exponent (1/length^2).
+    p2 : float
+        Linear coefficient of the exponent (1/length).
+
+    Returns
+    -------
+    numpy.ndarray
+        P(delta) (units 1/length), same shape as ``delta``.
+    """
     delta = np.asarray(delta, dtype=float)
     return (p0 + 2.0 * p1 * delta) * np.exp(-p1 * delta * delta - p2 * delta)
 
@@ -88,7 +165,22 @@ def mean_pore_size(p1: float, p2: float) -> float:
 
 
 def debye_mean_pore_size(phi2: float, a: float, coefficients=P1_COEFFICIENTS) -> float:
-    """Eq. (28): <delta> with p2 = pi phi2 / a and p1 from the cubic in phi2."""
+    """Eq. (28): <delta> with p2 = pi phi2 / a and p1 from the cubic in phi2.
+
+    Parameters
+    ----------
+    phi2 : float
+        Volume fraction of phase 2, in (0, 1).
+    a : float
+        Correlation length of Eq. (21), > 0.
+    coefficients : tuple of float
+        (c1, c2, c3) of the p1 cubic; default :data:`P1_COEFFICIENTS`.
+
+    Returns
+    -------
+    float
+        Mean pore size <delta>, in the length unit of ``a``.
+    """
     _check(phi2, a)
     return mean_pore_size(float(pore_p1(phi2, a, coefficients)), np.pi * phi2 / a)
 
@@ -96,7 +188,24 @@ def debye_mean_pore_size(phi2: float, a: float, coefficients=P1_COEFFICIENTS) ->
 def model_specific_surface(model: str, *, phi2: float, a: float | None = None,
                            radius: float | None = None) -> float:
     """Exact s of the three models of Ma & Torquato 2020 (units of 1/length of a or R):
-    ``"debye"`` Eq. (22), ``"overlapping_disks"`` Eq. (34), ``"hard_disks"`` Eq. (40)."""
+    ``"debye"`` Eq. (22), ``"overlapping_disks"`` Eq. (34), ``"hard_disks"`` Eq. (40).
+
+    Parameters
+    ----------
+    model : str
+        ``"debye"``, ``"overlapping_disks"`` or ``"hard_disks"``.
+    phi2 : float
+        Volume fraction of phase 2 (the disks for the disk models), in (0, 1).
+    a : float or None
+        Correlation length; required for ``"debye"``, ignored otherwise.
+    radius : float or None
+        Disk radius R; required for the two disk models, ignored for ``"debye"``.
+
+    Returns
+    -------
+    float
+        Specific surface s (interface length per unit area in 2D).
+    """
     from randmedia.theory import hard_disks, overlapping
 
     if model not in ("debye", "overlapping_disks", "hard_disks"):

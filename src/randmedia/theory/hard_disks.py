@@ -41,7 +41,22 @@ def chord_rate(radius: float, phi2: float) -> float:
 
 
 def lineal_path_void(z, radius: float, phi2: float) -> np.ndarray:
-    """Eq. (42): L(z) = phi1 exp(-2 phi2 z / (pi phi1 R))."""
+    """Eq. (42): L(z) = phi1 exp(-2 phi2 z / (pi phi1 R)).
+
+    Parameters
+    ----------
+    z : float or array_like
+        Segment lengths, >= 0 (same length unit as ``radius``).
+    radius : float
+        Disk radius R, > 0.
+    phi2 : float
+        Volume fraction of the disks, in (0, 1).
+
+    Returns
+    -------
+    numpy.ndarray
+        L(z) of the matrix (void) phase, same shape as ``z``.
+    """
     z = np.asarray(z, dtype=float)
     if np.any(z < 0):
         raise ValueError("segment lengths must be >= 0")
@@ -49,7 +64,22 @@ def lineal_path_void(z, radius: float, phi2: float) -> np.ndarray:
 
 
 def chord_density_void(z, radius: float, phi2: float) -> np.ndarray:
-    """Eq. (43): p(z) = (2 phi2 / (pi phi1 R)) exp(-2 phi2 z / (pi phi1 R))."""
+    """Eq. (43): p(z) = (2 phi2 / (pi phi1 R)) exp(-2 phi2 z / (pi phi1 R)).
+
+    Parameters
+    ----------
+    z : float or array_like
+        Chord lengths, >= 0 (same length unit as ``radius``).
+    radius : float
+        Disk radius R, > 0.
+    phi2 : float
+        Volume fraction of the disks, in (0, 1).
+
+    Returns
+    -------
+    numpy.ndarray
+        p(z) of the matrix chords (units 1/length), same shape as ``z``.
+    """
     z = np.asarray(z, dtype=float)
     if np.any(z < 0):
         raise ValueError("chord lengths must be >= 0")

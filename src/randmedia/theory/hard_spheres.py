@@ -84,7 +84,22 @@ def ball_volume(radius, dim: int):
 
 
 def number_density(phi: float, diameter: float, dim: int) -> float:
-    """rho = phi / v1(D/2)."""
+    """rho = phi / v1(D/2).
+
+    Parameters
+    ----------
+    phi : float
+        Packing fraction.
+    diameter : float
+        Particle diameter D, > 0.
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    float
+        rho, in units of 1/length^d (length of ``diameter``).
+    """
     _check_dim(dim)
     if not diameter > 0:
         raise ValueError(f"diameter must be > 0, got {diameter}")
@@ -92,7 +107,22 @@ def number_density(phi: float, diameter: float, dim: int) -> float:
 
 
 def packing_fraction(rho: float, diameter: float, dim: int) -> float:
-    """phi = rho v1(D/2)."""
+    """phi = rho v1(D/2).
+
+    Parameters
+    ----------
+    rho : float
+        Number density (1/length^d).
+    diameter : float
+        Particle diameter D (same length unit).
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    float
+        Packing fraction phi.
+    """
     _check_dim(dim)
     return float(rho * ball_volume(diameter / 2.0, dim))
 
@@ -118,7 +148,22 @@ def _check(phi, dim: int, eos: str) -> np.ndarray:
 
 
 def compressibility_factor(phi, dim: int, eos: str | None = None):
-    """Z = beta p / rho of the equilibrium hard-disk/-sphere fluid (module docstring)."""
+    """Z = beta p / rho of the equilibrium hard-disk/-sphere fluid (module docstring).
+
+    Parameters
+    ----------
+    phi : float or array_like
+        Packing fraction(s), in [0, close packing); for ``"virial"`` at most :data:`VIRIAL_RANGE`.
+    dim : int
+        Dimension d, 2 or 3.
+    eos : str or None
+        Equation of state (module docstring); None selects :data:`DEFAULT_EOS` of ``dim``.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        Z, a float for scalar ``phi``, else an array of the shape of ``phi``.
+    """
     eos = eos or DEFAULT_EOS.get(dim, "")
     phi = _check(phi, dim, eos)
     if eos == "carnahan_starling":
@@ -138,7 +183,22 @@ def compressibility_factor(phi, dim: int, eos: str | None = None):
 
 
 def contact_value(phi, dim: int, eos: str | None = None):
-    """g(D+) = (Z - 1) / (2^(d-1) phi) (virial theorem); 1 at phi = 0."""
+    """g(D+) = (Z - 1) / (2^(d-1) phi) (virial theorem); 1 at phi = 0.
+
+    Parameters
+    ----------
+    phi : float or array_like
+        Packing fraction(s), in [0, close packing).
+    dim : int
+        Dimension d, 2 or 3.
+    eos : str or None
+        Equation of state; None selects :data:`DEFAULT_EOS` of ``dim``.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        g(D+), a float for scalar ``phi``, else an array of the shape of ``phi``.
+    """
     eos = eos or DEFAULT_EOS.get(dim, "")
     phi = _check(phi, dim, eos)
     z = np.asarray(compressibility_factor(phi, dim, eos))
@@ -148,7 +208,22 @@ def contact_value(phi, dim: int, eos: str | None = None):
 
 
 def reduced_pressure_from_contact(phi, contact, dim: int):
-    """beta p / rho = 1 + 2^(d-1) phi g(D+) (the inverse of :func:`contact_value`)."""
+    """beta p / rho = 1 + 2^(d-1) phi g(D+) (the inverse of :func:`contact_value`).
+
+    Parameters
+    ----------
+    phi : float or array_like
+        Packing fraction(s).
+    contact : float or array_like
+        Contact value(s) g(D+), broadcast against ``phi``.
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    numpy.ndarray
+        beta p / rho (a 0-d array for scalar input).
+    """
     _check_dim(dim)
     return 1.0 + 2.0 ** (dim - 1) * np.asarray(phi, float) * np.asarray(contact, float)
 
@@ -156,7 +231,22 @@ def reduced_pressure_from_contact(phi, contact, dim: int):
 def structure_factor_zero(phi, dim: int, eos: str | None = None):
     """S(0) = [d(phi Z)/d phi]^(-1) (Klatt & Torquato 2016, Eq. 32), by a second-order
     finite difference with step 1e-5 (central; one-sided three-point next to phi = 0),
-    error ~1e-10 for these smooth closed forms."""
+    error ~1e-10 for these smooth closed forms.
+
+    Parameters
+    ----------
+    phi : float or array_like
+        Packing fraction(s), in [0, close packing).
+    dim : int
+        Dimension d, 2 or 3.
+    eos : str or None
+        Equation of state; None selects :data:`DEFAULT_EOS` of ``dim``.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        S(0), a float for scalar ``phi``, else an array of the shape of ``phi``.
+    """
     eos = eos or DEFAULT_EOS.get(dim, "")
     phi = _check(phi, dim, eos)
     h = 1e-5
@@ -178,6 +268,23 @@ def structure_factor_zero(phi, dim: int, eos: str | None = None):
 def spectral_density_zero(phi, dim: int, diameter: float = 1.0, eos: str | None = None):
     """chi_V(k = 0) = rho |m(0)|^2 S(0) = phi v1(D/2) S(0) of the hard-particle packing
     (Klatt & Torquato 2016, Eq. 14 at k = 0, with m(0) = v1(D/2) the particle volume): the
-    dashed line of the liquid in their Fig. 6, in units of D^d when diameter = 1."""
+    dashed line of the liquid in their Fig. 6, in units of D^d when diameter = 1.
+
+    Parameters
+    ----------
+    phi : float or array_like
+        Packing fraction(s), in [0, close packing).
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float
+        Particle diameter D; default 1, i.e. the result in units of D^d.
+    eos : str or None
+        Equation of state; None selects :data:`DEFAULT_EOS` of ``dim``.
+
+    Returns
+    -------
+    float or numpy.ndarray
+        chi_V(0) in units of length^d, shape of ``phi``.
+    """
     s0 = structure_factor_zero(phi, dim, eos)
     return np.asarray(phi) * float(ball_volume(diameter / 2.0, dim)) * s0

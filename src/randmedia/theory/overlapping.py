@@ -69,14 +69,44 @@ def reduced_density(phi2: float) -> float:
 
 
 def number_density(phi2: float, radius: float, dim: int) -> float:
-    """rho = eta / (omega_d R^d)."""
+    """rho = eta / (omega_d R^d).
+
+    Parameters
+    ----------
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    radius : float
+        Radius R of the balls, > 0.
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    float
+        rho, in units of 1/length^d.
+    """
     _check_dim(dim)
     _check(radius, phi2)
     return reduced_density(phi2) / (unit_ball_volume(dim) * radius**dim)
 
 
 def union_volume_ratio(r, radius: float, dim: int = 2) -> np.ndarray:
-    """v2(r; R) / v1(R): union of two d-balls of radius R, centres r apart (Eq. 33 for d=2)."""
+    """v2(r; R) / v1(R): union of two d-balls of radius R, centres r apart (Eq. 33 for d=2).
+
+    Parameters
+    ----------
+    r : float or array_like
+        Centre separations, >= 0 (length unit of ``radius``).
+    radius : float
+        Radius R of the balls, > 0.
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    numpy.ndarray
+        v2/v1, in [1, 2], same shape as ``r``.
+    """
     r = np.asarray(r, dtype=float)
     _check_dim(dim)
     _check(radius)
@@ -93,13 +123,45 @@ def union_volume_ratio(r, radius: float, dim: int = 2) -> np.ndarray:
 
 
 def s2_void(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
-    """Eq. (32): S2 of the void phase, exp(-eta v2/v1) with eta = -ln(1 - phi2)."""
+    """Eq. (32): S2 of the void phase, exp(-eta v2/v1) with eta = -ln(1 - phi2).
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distances between the two points, >= 0 (length unit of ``radius``).
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    numpy.ndarray
+        S2 of the void phase 1, same shape as ``r``.
+    """
     _check(radius, phi2)
     return np.exp(-reduced_density(phi2) * union_volume_ratio(r, radius, dim))
 
 
 def specific_surface(radius: float, phi2: float, dim: int) -> float:
-    """Eq. (34): s = d eta phi1 / R."""
+    """Eq. (34): s = d eta phi1 / R.
+
+    Parameters
+    ----------
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    float
+        s, interface measure per unit volume (1/length).
+    """
     _check_dim(dim)
     _check(radius, phi2)
     return dim * reduced_density(phi2) * (1.0 - phi2) / radius
@@ -127,14 +189,48 @@ def _two_sphere_density(r, radius: float, dim: int) -> np.ndarray:
 
 
 def surface_void(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
-    """F_sv(r) with the void (matrix) phase 1 (Eq. 35 for d = 2); F_sv(0) = s/2, F_sv(inf) = s phi1."""
+    """F_sv(r) with the void (matrix) phase 1 (Eq. 35 for d = 2); F_sv(0) = s/2, F_sv(inf) = s phi1.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distances between the two points, >= 0 (length unit of ``radius``).
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    numpy.ndarray
+        F_sv(r) (1/length), same shape as ``r``.
+    """
     _check_dim(dim)
     s_over_phi1 = specific_surface(radius, phi2, dim) / (1.0 - phi2)
     return s_over_phi1 * _fraction_outside(r, radius, dim) * s2_void(r, radius, phi2, dim)
 
 
 def surface_surface(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
-    """F_ss(r) (Eq. 36 for d = 2); F_ss(inf) = s^2, diverges as r -> 0 (and at r = 2R in 2D)."""
+    """F_ss(r) (Eq. 36 for d = 2); F_ss(inf) = s^2, diverges as r -> 0 (and at r = 2R in 2D).
+
+    Parameters
+    ----------
+    r : float or array_like
+        Distances between the two points, >= 0 (length unit of ``radius``).
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    numpy.ndarray
+        F_ss(r) (1/length^2), same shape as ``r``; inf at r = 0.
+    """
     _check_dim(dim)
     s_over_phi1 = specific_surface(radius, phi2, dim) / (1.0 - phi2)
     rho = number_density(phi2, radius, dim)
@@ -143,7 +239,24 @@ def surface_surface(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
 
 
 def pore_size_complementary_cdf(delta, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
-    """F(delta) = exp(-eta [(1 + delta/R)^d - 1]) (RHM Ch. 5; integral of Eq. 37)."""
+    """F(delta) = exp(-eta [(1 + delta/R)^d - 1]) (RHM Ch. 5; integral of Eq. 37).
+
+    Parameters
+    ----------
+    delta : float or array_like
+        Pore sizes, >= 0 (length unit of ``radius``).
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    numpy.ndarray
+        F(delta), same shape as ``delta``.
+    """
     _check_dim(dim)
     _check(radius, phi2)
     delta = np.asarray(delta, dtype=float)
@@ -153,14 +266,48 @@ def pore_size_complementary_cdf(delta, radius: float, phi2: float, dim: int = 2)
 
 
 def pore_size_density(delta, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
-    """P(delta) = -dF/ddelta = (d eta / R)(1 + delta/R)^(d-1) F(delta)   (Eq. 37 for d = 2)."""
+    """P(delta) = -dF/ddelta = (d eta / R)(1 + delta/R)^(d-1) F(delta)   (Eq. 37 for d = 2).
+
+    Parameters
+    ----------
+    delta : float or array_like
+        Pore sizes, >= 0 (length unit of ``radius``).
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    numpy.ndarray
+        P(delta) (1/length), same shape as ``delta``.
+    """
     F = pore_size_complementary_cdf(delta, radius, phi2, dim)
     eta = reduced_density(phi2)
     return dim * eta / radius * (1.0 + np.asarray(delta, float) / radius) ** (dim - 1) * F
 
 
 def pore_size_moment(n: int, radius: float, phi2: float, dim: int = 2) -> float:
-    """<delta^n> = n integral delta^(n-1) F(delta) ddelta (Eq. 18), by adaptive quadrature."""
+    """<delta^n> = n integral delta^(n-1) F(delta) ddelta (Eq. 18), by adaptive quadrature.
+
+    Parameters
+    ----------
+    n : int
+        Moment order, >= 1.
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    float
+        <delta^n>, in units of length^n.
+    """
     if n < 1:
         raise ValueError(f"moment order must be >= 1, got {n}")
     value, _ = quad(lambda d: n * d ** (n - 1) * pore_size_complementary_cdf(d, radius, phi2, dim),
@@ -169,7 +316,22 @@ def pore_size_moment(n: int, radius: float, phi2: float, dim: int = 2) -> float:
 
 
 def exclusion_probability(r, rho: float, dim: int = 3) -> np.ndarray:
-    """E_V(r) = exp(-rho omega_d r^d): no Poisson centre within r of a random point."""
+    """E_V(r) = exp(-rho omega_d r^d): no Poisson centre within r of a random point.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Radii of the test ball.
+    rho : float
+        Number density of the Poisson centres, > 0 (1/length^d).
+    dim : int
+        Dimension d, 2 or 3 (default 3).
+
+    Returns
+    -------
+    numpy.ndarray
+        E_V(r), same shape as ``r``.
+    """
     _check_dim(dim)
     if rho <= 0:
         raise ValueError(f"rho must be > 0, got {rho}")
@@ -177,19 +339,68 @@ def exclusion_probability(r, rho: float, dim: int = 3) -> np.ndarray:
 
 
 def chord_rate(radius: float, phi2: float, dim: int = 2) -> float:
-    """lambda = eta omega_{d-1} / (omega_d R): inverse mean chord of the void phase."""
+    """lambda = eta omega_{d-1} / (omega_d R): inverse mean chord of the void phase.
+
+    Parameters
+    ----------
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    float
+        lambda (1/length).
+    """
     _check_dim(dim)
     _check(radius, phi2)
     return reduced_density(phi2) * unit_ball_volume(dim - 1) / (unit_ball_volume(dim) * radius)
 
 
 def lineal_path_void(z, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
-    """L(z) = phi1 exp(-lambda z) = phi1^(1 + omega_{d-1} z / (omega_d R))   (Eq. 38 for d = 2)."""
+    """L(z) = phi1 exp(-lambda z) = phi1^(1 + omega_{d-1} z / (omega_d R))   (Eq. 38 for d = 2).
+
+    Parameters
+    ----------
+    z : float or array_like
+        Segment lengths (length unit of ``radius``).
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    numpy.ndarray
+        L(z) of the void phase, same shape as ``z``.
+    """
     z = np.asarray(z, dtype=float)
     return (1.0 - phi2) * np.exp(-chord_rate(radius, phi2, dim) * z)
 
 
 def chord_density_void(z, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
-    """p(z) = lambda exp(-lambda z)   (Eq. 39 for d = 2); mean chord 1/lambda (Eq. 20)."""
+    """p(z) = lambda exp(-lambda z)   (Eq. 39 for d = 2); mean chord 1/lambda (Eq. 20).
+
+    Parameters
+    ----------
+    z : float or array_like
+        Chord lengths (length unit of ``radius``).
+    radius : float
+        Radius R of the balls, > 0.
+    phi2 : float
+        Volume fraction of the balls (phase 2), in (0, 1).
+    dim : int
+        Dimension d, 2 or 3 (default 2).
+
+    Returns
+    -------
+    numpy.ndarray
+        p(z) (1/length), same shape as ``z``.
+    """
     rate = chord_rate(radius, phi2, dim)
     return rate * np.exp(-rate * np.asarray(z, dtype=float))

@@ -71,6 +71,24 @@ def gv_coefficients(phi: float, dim: int, eos: str | None = None, *, contact: fl
 
     ``contact`` (g(D+)) and, for d = 3, ``pressure`` (beta p / rho) override the values of
     the equation of state ``eos`` (default: Henderson in 2D, Kolafa in 3D).
+
+    Parameters
+    ----------
+    phi : float
+        Packing fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+    eos : str or None
+        Equation of state of :mod:`randmedia.theory.hard_spheres`; None: its default for ``dim``.
+    contact : float or None
+        g(D+) to use instead of the equation of state's.
+    pressure : float or None
+        beta p / rho to use instead of the equation of state's (d = 3 only; ignored in 2D).
+
+    Returns
+    -------
+    numpy.ndarray
+        Shape (dim,): a_0, ..., a_{d-1}.
     """
     _check(phi, dim)
     eos = eos or DEFAULT_EOS[dim]
@@ -96,7 +114,28 @@ def _cumulative(x, phi, dim, a):
 
 def exclusion_probability(r, phi: float, dim: int, diameter: float = 1.0, eos: str | None = None,
                           **overrides) -> np.ndarray:
-    """E_V(r) of the centres: exact 1 - phi (2r/D)^d for r <= D/2, scaled-particle beyond."""
+    """E_V(r) of the centres: exact 1 - phi (2r/D)^d for r <= D/2, scaled-particle beyond.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Radii of the empty ball, >= 0 (length unit of ``diameter``).
+    phi : float
+        Packing fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float
+        Particle diameter D, > 0 (default 1).
+    eos : str or None
+        Equation of state; None: the default for ``dim``.
+    **overrides
+        ``contact=``, ``pressure=`` passed to :func:`gv_coefficients`.
+
+    Returns
+    -------
+    numpy.ndarray
+        E_V(r), same shape as ``r``.
+    """
     if not diameter > 0:
         raise ValueError(f"diameter must be > 0, got {diameter}")
     a = gv_coefficients(phi, dim, eos, **overrides)
@@ -109,7 +148,28 @@ def exclusion_probability(r, phi: float, dim: int, diameter: float = 1.0, eos: s
 
 
 def gv(r, phi: float, dim: int, diameter: float = 1.0, eos: str | None = None, **overrides):
-    """G_V(r): exact 1/(1 - phi (2x)^d) for x <= 1/2, the polynomial in 1/x beyond."""
+    """G_V(r): exact 1/(1 - phi (2x)^d) for x <= 1/2, the polynomial in 1/x beyond.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Radii of the empty ball (length unit of ``diameter``).
+    phi : float
+        Packing fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float
+        Particle diameter D (default 1).
+    eos : str or None
+        Equation of state; None: the default for ``dim``.
+    **overrides
+        ``contact=``, ``pressure=`` passed to :func:`gv_coefficients`.
+
+    Returns
+    -------
+    numpy.ndarray
+        G_V(r), same shape as ``r``.
+    """
     a = gv_coefficients(phi, dim, eos, **overrides)
     x = np.asarray(r, dtype=float) / diameter
     safe = np.maximum(x, 0.5)
@@ -119,7 +179,28 @@ def gv(r, phi: float, dim: int, diameter: float = 1.0, eos: str | None = None, *
 
 def pore_size_ccdf(delta, phi: float, dim: int, diameter: float = 1.0, eos: str | None = None,
                    **overrides) -> np.ndarray:
-    """F(delta) = E_V(R + delta) / (1 - phi), delta >= 0 (mrj2016 Eq. 20)."""
+    """F(delta) = E_V(R + delta) / (1 - phi), delta >= 0 (mrj2016 Eq. 20).
+
+    Parameters
+    ----------
+    delta : float or array_like
+        Pore sizes, >= 0 (length unit of ``diameter``).
+    phi : float
+        Packing fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float
+        Particle diameter D = 2R (default 1).
+    eos : str or None
+        Equation of state; None: the default for ``dim``.
+    **overrides
+        ``contact=``, ``pressure=`` passed to :func:`gv_coefficients`.
+
+    Returns
+    -------
+    numpy.ndarray
+        F(delta), same shape as ``delta``.
+    """
     delta = np.asarray(delta, dtype=float)
     if np.any(delta < 0):
         raise ValueError("pore sizes must be >= 0")
@@ -129,7 +210,28 @@ def pore_size_ccdf(delta, phi: float, dim: int, diameter: float = 1.0, eos: str 
 
 def pore_size_density(delta, phi: float, dim: int, diameter: float = 1.0, eos: str | None = None,
                       **overrides) -> np.ndarray:
-    """P(delta) = rho s1(R + delta) G_V E_V / (1 - phi) (Eq. 41 for d = 2)."""
+    """P(delta) = rho s1(R + delta) G_V E_V / (1 - phi) (Eq. 41 for d = 2).
+
+    Parameters
+    ----------
+    delta : float or array_like
+        Pore sizes, >= 0 (length unit of ``diameter``).
+    phi : float
+        Packing fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float
+        Particle diameter D = 2R (default 1).
+    eos : str or None
+        Equation of state; None: the default for ``dim``.
+    **overrides
+        ``contact=``, ``pressure=`` passed to :func:`gv_coefficients`.
+
+    Returns
+    -------
+    numpy.ndarray
+        P(delta) (1/length), same shape as ``delta``.
+    """
     delta = np.asarray(delta, dtype=float)
     r = delta + diameter / 2.0
     x = r / diameter
@@ -140,7 +242,26 @@ def pore_size_density(delta, phi: float, dim: int, diameter: float = 1.0, eos: s
 
 def pore_size_moments(phi: float, dim: int, diameter: float = 1.0, eos: str | None = None,
                       **overrides) -> tuple[float, float]:
-    """(<delta>, <delta^2>) = (int F, 2 int delta F) by adaptive quadrature."""
+    """(<delta>, <delta^2>) = (int F, 2 int delta F) by adaptive quadrature.
+
+    Parameters
+    ----------
+    phi : float
+        Packing fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+    diameter : float
+        Particle diameter D (default 1).
+    eos : str or None
+        Equation of state; None: the default for ``dim``.
+    **overrides
+        ``contact=``, ``pressure=`` passed to :func:`gv_coefficients`.
+
+    Returns
+    -------
+    tuple of float
+        (<delta>, <delta^2>) in units of D and D^2 (length of ``diameter``).
+    """
     def ccdf(delta):
         return float(pore_size_ccdf(delta, phi, dim, diameter, eos, **overrides))
 
@@ -150,7 +271,22 @@ def pore_size_moments(phi: float, dim: int, diameter: float = 1.0, eos: str | No
 
 
 def specific_surface(phi: float, radius: float, dim: int) -> float:
-    """s = d phi / R of non-overlapping d-balls (Eq. 40 in 2D: 2 phi2 / R)."""
+    """s = d phi / R of non-overlapping d-balls (Eq. 40 in 2D: 2 phi2 / R).
+
+    Parameters
+    ----------
+    phi : float
+        Packing fraction, in (0, 1).
+    radius : float
+        Particle radius R, > 0.
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    float
+        s (1/length of ``radius``).
+    """
     _check(phi, dim)
     if not radius > 0:
         raise ValueError(f"radius must be > 0, got {radius}")
@@ -169,7 +305,26 @@ def eq41_coefficients(phi2: float, eos: str | None = None, **overrides) -> tuple
 def eq41_pore_size_density(delta, phi2: float, radius: float, eos: str | None = None,
                            **overrides) -> np.ndarray:
     """debye2020 Eq. (41) as printed: P(delta) = (4 phi2/R)(a_0 x + a_1)
-    exp[-phi2 (4 a_0 x^2 + 8 a_1 x + a_2)], x = delta/(2R) + 1/2."""
+    exp[-phi2 (4 a_0 x^2 + 8 a_1 x + a_2)], x = delta/(2R) + 1/2.
+
+    Parameters
+    ----------
+    delta : float or array_like
+        Pore sizes (length unit of ``radius``).
+    phi2 : float
+        Area fraction of the hard disks, in (0, 1).
+    radius : float
+        Disk radius R.
+    eos : str or None
+        2D equation of state; None: Henderson.
+    **overrides
+        ``contact=`` passed to :func:`gv_coefficients`.
+
+    Returns
+    -------
+    numpy.ndarray
+        P(delta) (1/length), same shape as ``delta``.
+    """
     a0, a1, a2 = eq41_coefficients(phi2, eos, **overrides)
     x = np.asarray(delta, dtype=float) / (2.0 * radius) + 0.5
     return 4.0 * phi2 / radius * (a0 * x + a1) * np.exp(-phi2 * (4 * a0 * x**2 + 8 * a1 * x + a2))

@@ -115,7 +115,22 @@ def cap_area(a, radius: float) -> np.ndarray:
 
 def cap_intersection_fraction(x, a, radius: float) -> np.ndarray:
     """alpha2(x; a) of Eq. (9): intersection area of two caps of base radius a whose centres
-    are a geodesic distance x apart, over s(a). Broadcasts over x and a."""
+    are a geodesic distance x apart, over s(a). Broadcasts over x and a.
+
+    Parameters
+    ----------
+    x : float or array_like
+        Geodesic distances between the cap centres, in [0, pi R].
+    a : float or array_like
+        Cap base radii, 0 <= a <= R (broadcast against ``x``).
+    radius : float
+        Sphere radius R, > 0 (same length unit as ``x`` and ``a``).
+
+    Returns
+    -------
+    numpy.ndarray
+        alpha2 in [0, 1], of the broadcast shape of ``x`` and ``a``.
+    """
     check_radius(radius)
     phi = cap_angle(a, radius)
     x = np.asarray(x, dtype=float)
@@ -141,14 +156,44 @@ def disk_intersection_fraction(r, a) -> np.ndarray:
 
 
 def uniform_variance(a, radius: float, rho: float) -> np.ndarray:
-    """Eq. (6): sigma^2 = rho s (1 - s / (4 pi R^2)) (canonical, g2 = 1); equals rho pi a^2."""
+    """Eq. (6): sigma^2 = rho s (1 - s / (4 pi R^2)) (canonical, g2 = 1); equals rho pi a^2.
+
+    Parameters
+    ----------
+    a : float or array_like
+        Cap base radii, 0 <= a <= R.
+    radius : float
+        Sphere radius R.
+    rho : float
+        Number density N / (4 pi R^2), > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        sigma^2(a), same shape as ``a``.
+    """
     check_density(rho)
     s = cap_area(a, radius)
     return rho * s * (1.0 - s / (4.0 * np.pi * radius**2))
 
 
 def poisson_variance(a, radius: float, rho: float) -> np.ndarray:
-    """Eq. (7): sigma^2 = <rho> s (grand canonical, Poisson points)."""
+    """Eq. (7): sigma^2 = <rho> s (grand canonical, Poisson points).
+
+    Parameters
+    ----------
+    a : float or array_like
+        Cap base radii, 0 <= a <= R.
+    radius : float
+        Sphere radius R.
+    rho : float
+        Mean number density <rho>, > 0.
+
+    Returns
+    -------
+    numpy.ndarray
+        sigma^2(a), same shape as ``a``.
+    """
     check_density(rho)
     return rho * cap_area(a, radius)
 
@@ -158,6 +203,22 @@ def cap_intersection_weights(x_edges, a, radius: float, nodes: int = 12) -> np.n
 
     Each bin is split at the kink x = 2 R phi_k and integrated by ``nodes``-point
     Gauss-Legendre; sum_b W[k, b] = s(a_k) when the bins cover [0, pi R].
+
+    Parameters
+    ----------
+    x_edges : array_like
+        Strictly increasing geodesic bin edges, shape (n_bins + 1,), within [0, pi R].
+    a : float or array_like
+        Cap base radii, 0 <= a <= R; a scalar counts as one cap.
+    radius : float
+        Sphere radius R.
+    nodes : int
+        Gauss-Legendre points per (piece of a) bin (default 12).
+
+    Returns
+    -------
+    numpy.ndarray
+        W, shape (n_caps, n_bins), in units of area (length^2).
     """
     check_radius(radius)
     edges = np.asarray(x_edges, dtype=float)
@@ -191,6 +252,28 @@ def variance_from_g2(a, radius: float, rho: float, x_edges, g2, *, n_particles: 
 
     Eq. (4): rho s [1 - rho s + rho (1 - 1/N) int g2(x) alpha2(x; a) dA];
     Eq. (5): <rho> s [1 - <rho> s + <rho> int g2(x) alpha2(x; a) dA].
+
+    Parameters
+    ----------
+    a : float or array_like
+        Cap base radii, 0 <= a <= R.
+    radius : float
+        Sphere radius R.
+    rho : float
+        Number density (canonical) or mean number density <rho> (grand canonical), > 0.
+    x_edges : array_like
+        Geodesic bin edges of ``g2``, shape (n_bins + 1,).
+    g2 : array_like
+        Binned geodesic pair correlation function, shape (n_bins,).
+    n_particles : float or None
+        Particle number N (>= 2) for ``"canonical"``; ignored for ``"grand_canonical"``.
+    ensemble : str
+        ``"canonical"`` (Eq. 4, default) or ``"grand_canonical"`` (Eq. 5).
+
+    Returns
+    -------
+    numpy.ndarray
+        sigma^2(a), same shape as ``a``.
     """
     check_density(rho)
     g2 = np.asarray(g2, dtype=float)
