@@ -81,7 +81,7 @@ class ContactNetwork:
 
 def contact_network(positions, box, diameter: float = 1.0,
                     gap_tolerance: float = 1e-9) -> ContactNetwork:
-    """Every pair whose gap (distance - D) is below ``gap_tolerance`` (units of D x D).
+    """Every pair whose gap (distance - D) is below ``gap_tolerance`` D (a fraction of D).
 
     Parameters
     ----------

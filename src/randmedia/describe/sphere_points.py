@@ -210,7 +210,7 @@ def cap_variance(frames: Sequence[np.ndarray], radius: float, a, rng: np.random.
     """sigma^2(a) with ``n_centres`` fresh random centres per frame (module docstring).
 
     One frame: the centres are split into ``n_blocks`` groups; several frames: the
-    frames are (at least ``n_blocks`` of them needed). Returns (sigma^2, SEM,
+    frames are split into ``n_blocks`` contiguous blocks (at least ``n_blocks`` frames needed). Returns (sigma^2, SEM,
     leave-one-out curves (n_blocks, K), mean count (K,)).
 
     Parameters
