@@ -17,7 +17,7 @@ import pytest
 
 from randmedia.describe import bond_order, jamming
 from randmedia.generate import inflation, mrj
-from randmedia.generate.jammed import ConstructionError, packing_dataset, packing_fraction
+from randmedia.generate.jammed import packing_dataset, packing_fraction
 from randmedia.generate.lubachevsky_stillinger import LSParameters
 from randmedia.io import read_dataset, write_dataset
 from randmedia.periodic import Cell, pairs_within
@@ -68,18 +68,16 @@ def test_convergence_by_stall():
     assert not inflation.converged([], [], params)
 
 
-def test_a_creeping_inflation_hands_over_but_is_not_called_jammed():
-    """phi still grows every LP (sqrt(Gamma) - 1 ~ 1e-7 >> tolerance) but by < creep_gain over
-    creep_lps LPs: the stage ends as "creeping", not as collectively jammed."""
-    params = inflation.InflationParameters(tolerance=1e-10, stall_lps=5, creep_gain=1e-5, creep_lps=10)
-    phis = list(0.6357 * (1 + 3e-7 * np.arange(11)))  # 3e-6 over 10 LPs
+def test_a_creeping_inflation_ends_at_max_lps_but_is_not_called_jammed():
+    """phi still grows every LP (sqrt(Gamma) - 1 ~ 1e-7 >> tolerance): the stage ends at
+    max_lps as "max_lps", not as collectively jammed; a converged last LP wins."""
+    params = inflation.InflationParameters(tolerance=1e-10, stall_lps=5, max_lps=11)
+    phis = list(0.6357 * (1 + 3e-7 * np.arange(11)))
     inflations = [1e-7] * 11
-    assert inflation.stop_reason(inflations[:10], phis[:10], params) is None  # too few LPs yet
-    assert inflation.stop_reason(inflations, phis, params) == "creeping"
+    assert inflation.stop_reason(inflations[:10], phis[:10], params) is None
+    assert inflation.stop_reason(inflations, phis, params) == "max_lps"
     assert not inflation.converged(inflations, phis, params)
-    faster = list(0.6357 * (1 + 2e-6 * np.arange(11)))  # 2e-5 over 10 LPs: still densifying
-    assert inflation.stop_reason(inflations, faster, params) is None
-    assert inflation.stop_reason(inflations, phis, replace(params, creep_gain=0.0)) is None
+    assert inflation.stop_reason(inflations, phis, replace(params, max_lps=12)) is None
     assert inflation.stop_reason([1e-11] * 11, phis, params) == "no inflation"
 
 
@@ -92,7 +90,6 @@ def test_inflation_refuses_a_cutoff_beyond_the_cell():
 @pytest.mark.parametrize("field, value", [
     ("displacement_bound", 0.0), ("displacement_bound", 0.5), ("final_displacement_bound", 0.1),
     ("tolerance", 0.0), ("stall_lps", 1), ("max_lps", 0), ("backend", "glpk"),
-    ("creep_gain", -1e-6), ("creep_lps", 1),
 ])
 def test_bad_inflation_parameters_are_refused(field, value):
     with pytest.raises(ValueError, match=field):
@@ -161,11 +158,16 @@ def test_killed_run_resumes_from_its_checkpoint(tmp_path, monkeypatch, packing):
     assert not checkpoint.exists()
 
 
-def test_unconverged_inflation_fails_clearly():
+def test_unconverged_inflation_hands_over_to_the_polish():
+    """After max_lps inflation LPs the TJ polish takes over; the packing is still strictly
+    jammed (the polish's own test) and records why the inflation stage ended."""
     protocol = mrj.MRJProtocol(compression=QUICK.compression,
                                inflation=inflation.InflationParameters(max_lps=1))
-    with pytest.raises(ConstructionError, match="max_lps"):
-        mrj.make_packing(5, 120, protocol)
+    packing = mrj.make_packing(5, 120, protocol)
+    assert packing.n_inflation_lp == 1 and packing.inflation_stop == "max_lps"
+    assert packing.construction_attrs()["inflation_stop"] == "max_lps"
+    analysis = jamming.analyse(packing.positions, packing.box, packing.diameter)
+    assert analysis.jammed and analysis.isostatic_excess == 0
 
 
 def test_protocol_from_config_names_bad_keys():

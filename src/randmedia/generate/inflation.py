@@ -33,14 +33,15 @@ is measurable. Then the packing is collectively jammed in its cell and the row d
 are its contact forces (Artiaco et al., Sec. II B); the largest move of a sphere of
 the force-bearing backbone (>= d + 1 rows with a positive dual) is recorded.
 
-Creep: some packings keep a collective sliding motion that the fixed cell cannot stop;
-each LP then moves a group of spheres by the bound and gains only sqrt(Gamma) - 1 ~ 1e-7
-(paper-config MRJ sample 9, N = 2000: 1000 LPs from phi 0.63570 to ~0.6363 without
-converging). When phi grew by less than ``creep_gain`` (relative) over the last
-``creep_lps`` LPs the stage ends (:func:`stop_reason` "creeping") and the caller hands the
-packing to a method that can also deform the cell (the Torquato-Jiao polish of
-:mod:`randmedia.generate.mrj`), which removes such motions at a much larger gain per LP.
-The packing is then *not* certified collectively jammed by this stage.
+Creep: a rare packing keeps a collective sliding motion that the fixed cell does not
+stop; each LP then moves a group of spheres by the bound and gains only sqrt(Gamma) - 1 ~
+1e-7 (paper-config MRJ sample 9, N = 2000: phi 0.63570 after 10 LPs, 0.636313 after 781,
+still inflating). After ``max_lps`` LPs the stage therefore ends unconverged
+(:func:`stop_reason` "max_lps") and the caller hands the packing to a method that can also
+deform the cell (the Torquato-Jiao polish of :mod:`randmedia.generate.mrj`), which gains
+10-50x more per LP on such a motion. The packing is then *not* certified collectively
+jammed by this stage. ``max_lps`` lies above the LP count of every converging packing
+measured, so it changes none of them.
 
 Every LP is recorded (:data:`STEP_RECORD_KEYS`): the inflation sqrt(Gamma) - 1 it
 predicted, the gain it realized, the rows, the displacement components at their bound
@@ -75,8 +76,6 @@ class InflationParameters:
     switch_inflation: float = 1.0e-5
     tolerance: float = 1.0e-10
     stall_lps: int = 5
-    creep_gain: float = 1.0e-5
-    creep_lps: int = 10
     max_lps: int = 1000
     backend: str = "highs-ipm"
 
@@ -87,8 +86,6 @@ class InflationParameters:
             "switch_inflation": 0 < self.switch_inflation < 1,
             "tolerance": 0 < self.tolerance < 1e-3,
             "stall_lps": int(self.stall_lps) == self.stall_lps and self.stall_lps >= 2,
-            "creep_gain": 0 <= self.creep_gain < 1e-2,
-            "creep_lps": int(self.creep_lps) == self.creep_lps and self.creep_lps >= 2,
             "max_lps": int(self.max_lps) == self.max_lps and self.max_lps >= 1,
             "backend": self.backend in packing_lp.BACKENDS and self.backend != "scipy",
         }
@@ -215,8 +212,8 @@ def stop_reason(inflations, phis, params: InflationParameters) -> str | None:
     """Why the iLP stage ends after these per-LP histories, or None to go on (module
     docstring): "no inflation" (the last LP predicts sqrt(Gamma) - 1 < ``tolerance``) or
     "stalled" (phi grew by at most ``tolerance`` relative over ``stall_lps`` LPs): collectively
-    jammed; "creeping" (phi grew by less than ``creep_gain`` relative over ``creep_lps`` LPs;
-    ``creep_gain`` = 0 never): a sliding motion the fixed cell does not stop.
+    jammed; "max_lps" (``max_lps`` LPs done without either): unconverged, e.g. a sliding
+    motion the fixed cell does not stop.
 
     Parameters
     ----------
@@ -225,12 +222,12 @@ def stop_reason(inflations, phis, params: InflationParameters) -> str | None:
     phis : sequence of float
         Packing fraction after each LP, oldest first.
     params : InflationParameters
-        Supplies ``tolerance``, ``stall_lps``, ``creep_gain`` and ``creep_lps``.
+        Supplies ``tolerance``, ``stall_lps`` and ``max_lps``.
 
     Returns
     -------
     str or None
-        "no inflation", "stalled", "creeping", or None.
+        "no inflation", "stalled", "max_lps", or None.
     """
     if not phis:
         return None
@@ -239,9 +236,8 @@ def stop_reason(inflations, phis, params: InflationParameters) -> str | None:
     k = params.stall_lps
     if len(phis) > k and phis[-1] - phis[-1 - k] <= params.tolerance * phis[-1]:
         return "stalled"
-    k = params.creep_lps
-    if len(phis) > k and phis[-1] - phis[-1 - k] < params.creep_gain * phis[-1]:
-        return "creeping"
+    if len(phis) >= params.max_lps:
+        return "max_lps"
     return None
 
 
@@ -256,11 +252,11 @@ def converged(inflations, phis, params: InflationParameters) -> bool:
     phis : sequence of float
         Packing fraction after each LP, oldest first.
     params : InflationParameters
-        Supplies ``tolerance``, ``stall_lps``, ``creep_gain`` and ``creep_lps``.
+        Supplies ``tolerance``, ``stall_lps`` and ``max_lps``.
 
     Returns
     -------
     bool
-        True when :func:`stop_reason` is "no inflation" or "stalled" (not "creeping").
+        True when :func:`stop_reason` is "no inflation" or "stalled" (not "max_lps").
     """
     return stop_reason(inflations, phis, params) in ("no inflation", "stalled")

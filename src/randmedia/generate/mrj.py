@@ -16,9 +16,9 @@ behind the choice):
    stage only brings the spheres close to their jammed state (gaps ~ D / pressure).
 2. **Collective jamming in the fixed cell** (:mod:`randmedia.generate.inflation`):
    iterated inflation LPs until no sphere of the backbone can move and no inflation is
-   left, or until they only creep (phi gains < ``creep_gain`` over ``creep_lps`` LPs: a
-   sliding motion the fixed cell does not stop, which stage 3 removes). Each step is
-   exact (conservative constraints), so nothing is ever rejected.
+   left, or at most ``max_lps`` of them (a rare packing creeps: a sliding motion the fixed
+   cell does not stop, which stage 3 removes). Each step is exact (conservative
+   constraints), so nothing is ever rejected.
 3. **Strict jamming** (:func:`randmedia.generate.jammed.jam`): TJ LPs with a deformable
    cell (minimize Tr epsilon) and small strain bounds until the volume cannot be lowered
    to first order: the cell's d (d + 1) / 2 strain degrees of freedom are blocked too.
@@ -43,7 +43,7 @@ import numpy as np
 
 from randmedia.checkpoint import checkpoint_key
 from randmedia.generate import inflation
-from randmedia.generate.jammed import (ConstructionError, JammedPacking, TJParameters, jam,
+from randmedia.generate.jammed import (JammedPacking, TJParameters, jam,
                                        packing_fraction, validate_packing_input)
 from randmedia.generate.lubachevsky_stillinger import LSParameters, compress
 from randmedia.resumable import ResumableRun
@@ -144,7 +144,9 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
     Raises
     ------
     ConstructionError
-        If the inflation LPs do not converge within ``protocol.inflation.max_lps``.
+        If the polish does not converge within ``protocol.polish.max_lps``
+        (:func:`randmedia.generate.jammed.jam`); inflation LPs that do not converge within
+        ``protocol.inflation.max_lps`` hand over to the polish instead.
     """
     log = log or logging.getLogger(__name__)
     validate_packing_input(n, 0.5, dim)
@@ -177,11 +179,6 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
     progress = run.progress(None, "inflation", "LPs", done=len(history["phi"]))
 
     def finished() -> bool:
-        if reason is None and len(history["phi"]) >= params.max_lps:
-            raise ConstructionError(
-                f"the inflation LPs did not converge within max_lps = {params.max_lps} (phi = "
-                f"{packing_fraction(positions, box):.6f}, last sqrt(Gamma) - 1 = "
-                f"{history['inflation'][-1]:.3g})")
         return reason is not None
 
     def step() -> None:
@@ -200,7 +197,10 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
             f"{record['solve_seconds']:.2f} s (build {record['build_seconds']:.2f} s)"))
 
     run.loop(step, finished, arrays)
-    log.info("inflation stage ended after %d LPs: %s", len(history["phi"]), reason)
+    log.info("inflation stage ended after %d LPs: %s%s", len(history["phi"]), reason,
+             "" if reason != "max_lps" else
+             f" (still inflating: last sqrt(Gamma) - 1 = {history['inflation'][-1]:.3g}, phi = "
+             f"{history['phi'][-1]:.7f}); the polish takes over")
     run.save(arrays)  # a kill in the polish resumes after the inflation
     polish_checkpoint = None if checkpoint is None else \
         Path(checkpoint).with_name(Path(checkpoint).stem + ".polish.npz")
