@@ -239,24 +239,3 @@ def stop_reason(inflations, phis, params: InflationParameters) -> str | None:
     if len(phis) >= params.max_lps:
         return "max_lps"
     return None
-
-
-def converged(inflations, phis, params: InflationParameters) -> bool:
-    """Collectively jammed (module docstring): the last LP predicts no inflation, or phi
-    stalled over the last ``params.stall_lps`` LPs. Arguments: the per-LP histories.
-
-    Parameters
-    ----------
-    inflations : sequence of float
-        Per-LP predicted inflation sqrt(Gamma) - 1, oldest first.
-    phis : sequence of float
-        Packing fraction after each LP, oldest first.
-    params : InflationParameters
-        Supplies ``tolerance``, ``stall_lps`` and ``max_lps``.
-
-    Returns
-    -------
-    bool
-        True when :func:`stop_reason` is "no inflation" or "stalled" (not "max_lps").
-    """
-    return stop_reason(inflations, phis, params) in ("no inflation", "stalled")

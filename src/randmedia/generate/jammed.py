@@ -541,7 +541,7 @@ def _report(progress, history, dim, max_lps: int) -> None:
     growth = (recent[-1] - recent[0]) / max(len(recent) - 1, 1)
     target = 0.64 if dim == 3 else 0.84
     remaining = 50 + (max(target - phi, 0.0) / growth if growth > 0 else 0.0)
-    total = min(max_lps, done + int(min(round(remaining), max_lps)))
+    total = min(max_lps, done + int(round(remaining)))
     progress.step(1, total=total, detail=lambda: (
         f"phi = {phi:.6f}, Tr eps = {history['trace'][-1]:.3g}, rescale - 1 = "
         f"{history['rescale'][-1] - 1:.2g}, {history['rows'][-1]} rows (last LP solve "
