@@ -36,6 +36,39 @@ def test_bilinear_supersample_is_exact_on_linear_and_periodic_fields():
     np.testing.assert_allclose(row[1:-1], np.arange(0.25, 7.0, 0.5))
 
 
+def test_trilinear_supersample_is_exact_on_linear_fields_and_keeps_the_mean():
+    field = np.random.default_rng(3).random((5, 6, 7))
+    fine = bilinear_supersample(field, 3)
+    assert fine.shape == (15, 18, 21)
+    np.testing.assert_allclose(fine[1::3, 1::3, 1::3], field)
+    assert fine.mean() == pytest.approx(field.mean())
+    # x + 2y + 3z is linear away from the wraps: interpolation is exact there
+    z, y, x = np.meshgrid(np.arange(6.0), np.arange(6.0), np.arange(6.0), indexing="ij")
+    fine = bilinear_supersample(x + 2 * y + 3 * z, 2)
+    centres = (np.arange(12) + 0.5) / 2 - 0.5
+    inner = slice(1, -1)
+    zc, yc, xc = np.meshgrid(centres, centres, centres, indexing="ij")
+    np.testing.assert_allclose(fine[inner, inner, inner], (xc + 2 * yc + 3 * zc)[inner, inner, inner])
+
+
+@pytest.mark.parametrize("model", ["pixels", "bilinear"])
+def test_3d_level_set_keeps_the_volume_fraction_and_reads_its_own_grid(model):
+    from randmedia.describe.chords import LevelSet
+
+    image = (np.random.default_rng(4).random((8, 9, 10)) < 0.4).astype(np.uint8)
+    level_set = LevelSet.build(image, 0, 0.7, 2, model)
+    assert level_set.fine.shape == (16, 18, 20) and level_set.shape == (8, 9, 10)
+    assert level_set.inside().mean() == pytest.approx(np.mean(image == 0), abs=1 / level_set.fine.size)
+    k, i, j = np.array([3, 15, 0]), np.array([5, 0, 17]), np.array([7, 19, 2])
+    values = level_set.value_at((j + 0.5) / 2, (i + 0.5) / 2, (k + 0.5) / 2)
+    np.testing.assert_allclose(values, level_set.fine[k, i, j])
+    # halfway between two sub-voxel centres along z: their mean (periodic across the wrap)
+    value = level_set.value_at(np.array([0.25]), np.array([0.25]), np.array([0.0]))
+    assert value[0] == pytest.approx(0.5 * (level_set.fine[0, 0, 0] + level_set.fine[-1, 0, 0]))
+    with pytest.raises(ValueError, match="needs z"):
+        level_set.value_at(np.array([0.1]), np.array([0.1]))
+
+
 def test_level_set_area_equals_volume_fraction():
     """The region the lines see (bilinear field > threshold) has the image's volume fraction,
     measured on a finer sub-pixel grid than the one the threshold was chosen on."""

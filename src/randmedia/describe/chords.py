@@ -115,22 +115,29 @@ def _walk(field, threshold, x0, y0, dx, dy, n_steps, step, runs, complete):
 
 
 def bilinear_supersample(field: np.ndarray, factor: int) -> np.ndarray:
-    """Periodic bilinear interpolation of ``field`` (values at pixel centres) at the
-    centres of a ``factor`` x ``factor`` grid of sub-pixels; shape (ny*factor, nx*factor)."""
-    ny, nx = field.shape
-    out = np.empty((ny * factor, nx * factor))
+    """Periodic multilinear interpolation of ``field`` (values at pixel/voxel centres) at the
+    centres of a ``factor``^d grid of sub-cells per cell; shape (n * factor for each axis).
+    Bilinear in 2D, trilinear in 3D: one axis after the other (axis 0 first), which is the
+    same arithmetic in the same order as interpolating rows and then columns."""
+    out = np.asarray(field, dtype=np.float64)
+    for axis in range(out.ndim):
+        out = _linear_supersample_axis(out, factor, axis)
+    return out
+
+
+def _linear_supersample_axis(field: np.ndarray, factor: int, axis: int) -> np.ndarray:
+    """Periodic linear interpolation along ``axis`` at the ``factor`` sub-cell centres of each cell."""
+    shape = list(field.shape)
+    shape[axis] *= factor
+    out = np.empty(shape)
     for a in range(factor):
-        ty = (a + 0.5) / factor - 0.5  # offset from the pixel centre, in (-1/2, 1/2)
-        rows = field if ty >= 0 else np.roll(field, 1, axis=0)
-        below = np.roll(field, -1, axis=0) if ty >= 0 else field
-        wy = ty if ty >= 0 else 1.0 + ty
-        column_mix = (1 - wy) * rows + wy * below
-        for b in range(factor):
-            tx = (b + 0.5) / factor - 0.5
-            left = column_mix if tx >= 0 else np.roll(column_mix, 1, axis=1)
-            right = np.roll(column_mix, -1, axis=1) if tx >= 0 else column_mix
-            wx = tx if tx >= 0 else 1.0 + tx
-            out[a::factor, b::factor] = (1 - wx) * left + wx * right
+        t = (a + 0.5) / factor - 0.5  # offset from the cell centre, in (-1/2, 1/2)
+        lower = field if t >= 0 else np.roll(field, 1, axis=axis)
+        upper = np.roll(field, -1, axis=axis) if t >= 0 else field
+        w = t if t >= 0 else 1.0 + t
+        index = [slice(None)] * field.ndim
+        index[axis] = slice(a, None, factor)
+        out[tuple(index)] = (1 - w) * lower + w * upper
     return out
 
 
@@ -171,13 +178,16 @@ LEVEL_SET_MODELS = ("bilinear", "pixels")
 
 @dataclass(frozen=True)
 class LevelSet:
-    """The Ma-Torquato level-set medium of a periodic 2D pixel image, on a sub-pixel grid.
+    """The Ma-Torquato level-set medium of a periodic 2D pixel (or 3D voxel) image, on a
+    sub-pixel grid.
 
     The indicator of ``phase`` is Gaussian-filtered (periodic, width ``sigma`` pixels) and
     sampled on a ``supersample`` x ``supersample`` grid of sub-pixels per pixel (spacing
     ``1/supersample`` pixels; sub-pixel (a, b) has centre ((b + 1/2)/m, (a + 1/2)/m)) as
     ``fine``; ``threshold`` is the value above which the fine grid holds the phase's
     volume fraction of the image; the medium's ``phase`` is the region fine > threshold.
+    A 3D image (nz, ny, nx) is treated the same way with ``supersample``^3 sub-voxels
+    (trilinear for ``"bilinear"``); axes are (z, y, x) and points (x, y, z).
     Two readings of a pixel image (``model``):
 
     * ``"bilinear"``: the pixel values are samples at pixel centres; they are filtered on
@@ -205,8 +215,8 @@ class LevelSet:
 
         Parameters
         ----------
-        image : ndarray, shape (ny, nx)
-            Periodic 2D image of phase labels.
+        image : ndarray, shape (ny, nx) or (nz, ny, nx)
+            Periodic 2D or 3D image of phase labels.
         phase : int
             Label of the phase.
         sigma : float
@@ -219,7 +229,7 @@ class LevelSet:
         Returns
         -------
         LevelSet
-            ``fine`` of shape (ny * supersample, nx * supersample); ``field`` None for ``"pixels"``.
+            ``fine`` of shape (n * supersample for each axis); ``field`` None for ``"pixels"``.
         """
         from scipy.ndimage import gaussian_filter
 
@@ -228,11 +238,11 @@ class LevelSet:
         if model not in LEVEL_SET_MODELS:
             raise ValueError(f"level-set model must be one of {LEVEL_SET_MODELS}, got {model!r}")
         indicator = (np.asarray(image) == phase).astype(np.float64)
-        if indicator.ndim != 2:
-            raise ValueError(f"expected a 2D image, got shape {indicator.shape}")
+        if indicator.ndim not in (2, 3):
+            raise ValueError(f"expected a 2D or 3D image, got shape {indicator.shape}")
         if model == "pixels":
             field = None
-            fine = np.kron(indicator, np.ones((supersample, supersample)))
+            fine = np.kron(indicator, np.ones((supersample,) * indicator.ndim))
             if sigma > 0:
                 fine = gaussian_filter(fine, sigma * supersample, mode="wrap")
         elif sigma <= 0:
@@ -254,18 +264,22 @@ class LevelSet:
         return 1.0 / self.supersample
 
     @property
-    def shape(self) -> tuple[int, int]:
-        """Image shape in pixels."""
+    def shape(self) -> tuple[int, ...]:
+        """Image shape in pixels (voxels)."""
         return tuple(n // self.supersample for n in self.fine.shape)
 
     def inside(self) -> np.ndarray:
         """Boolean fine grid: True in the phase (fine > threshold)."""
         return self.fine > self.threshold
 
-    def value_at(self, x: np.ndarray, y: np.ndarray) -> np.ndarray:
-        """Periodic bilinear interpolation of ``fine`` at points (x, y) in pixels: the field
-        whose contour the marching-squares interface follows; the phase is where it exceeds
-        ``threshold``."""
+    def value_at(self, x: np.ndarray, y: np.ndarray, z: np.ndarray | None = None) -> np.ndarray:
+        """Periodic bilinear (2D) or trilinear (3D, ``z`` given) interpolation of ``fine`` at
+        points (x, y[, z]) in pixels: the field whose contour the marching-squares (marching
+        tetrahedra) interface follows; the phase is where it exceeds ``threshold``."""
+        if self.fine.ndim == 3:
+            if z is None:
+                raise ValueError("a 3D level set needs z")
+            return self._value_at_3d(x, y, z)
         ny, nx = self.fine.shape
         fx = np.asarray(x, dtype=float) * self.supersample - 0.5
         fy = np.asarray(y, dtype=float) * self.supersample - 0.5
@@ -277,6 +291,22 @@ class LevelSet:
         f = self.fine
         return ((1 - ty) * ((1 - tx) * f[i0, j0] + tx * f[i0, j1])
                 + ty * ((1 - tx) * f[i1, j0] + tx * f[i1, j1]))
+
+    def _value_at_3d(self, x, y, z) -> np.ndarray:
+        """Trilinear interpolation of the 3D ``fine`` grid at points (x, y, z) in voxels."""
+        f = self.fine
+        corners = []
+        for coordinate, n in zip((z, y, x), f.shape):
+            c = np.asarray(coordinate, dtype=float) * self.supersample - 0.5
+            low = np.floor(c).astype(np.int64)
+            corners.append((low % n, (low + 1) % n, c - low))
+        (k0, k1, tz), (i0, i1, ty), (j0, j1, tx) = corners
+
+        def plane(k):
+            return ((1 - ty) * ((1 - tx) * f[k, i0, j0] + tx * f[k, i0, j1])
+                    + ty * ((1 - tx) * f[k, i1, j0] + tx * f[k, i1, j1]))
+
+        return (1 - tz) * plane(k0) + tz * plane(k1)
 
 
 def sample_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *,
