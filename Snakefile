@@ -3,6 +3,7 @@
 #   snakemake                      everything that exists, paper-fidelity config
 #   snakemake --configfile config/quick.yaml        same DAG, small parameters
 #   snakemake debye2020            one paper (named targets: README.md)
+#   snakemake debye3d              beyond the papers: 3D Debye media (not part of `all`)
 #
 # The merged config is validated against workflow/schemas/config.schema.yaml
 # (defaults filled in) before any job is scheduled.
@@ -34,6 +35,7 @@ include: "workflow/rules/mrj2016_equilibrium.smk"
 include: "workflow/rules/mrj2016_jammed.smk"
 include: "workflow/rules/mrj2016.smk"
 include: "workflow/rules/sphere2019.smk"
+include: "workflow/rules/debye3d.smk"
 include: "workflow/rules/report.smk"
 include: "workflow/rules/record.smk"
 

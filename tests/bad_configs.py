@@ -180,3 +180,13 @@ BAD_CONFIGS += [
      "mrj2016.mrj.contacts.gap_tolerance"),
     ("mrj_unknown_key", _set(MRJ + ("n_particles",), 2000), "mrj2016.mrj.n_particles"),
 ]
+
+# beyond the papers: 3D Debye media (debye3d)
+BAD_CONFIGS += [
+    ("debye3d_lc_half_image", _set(("debye3d", "media", "lc"), 16.0), "debye3d.media.lc"),
+    ("debye3d_one_plane_window", _set(("debye3d", "poisson_planes", "n_samples"), 1),
+     "debye3d.poisson_planes.n_samples"),
+    ("debye3d_s2_beyond_half", _set(("debye3d", "s2", "r_max_over_length"), 8.0),
+     "debye3d.s2.r_max_over_length"),
+    ("debye3d_unknown_key", _set(("debye3d", "media", "L"), 64), "debye3d.media.L"),
+]

@@ -438,6 +438,28 @@ def _sphere2019_checks(section: dict, config: dict) -> list[str]:
 
 
 #: config section (dotted path) -> its cross-check function
+def _debye3d_checks(section: dict, config: dict) -> list[str]:
+    """debye3d: every distance range inside half the periodic image (or window), and the
+    Poisson-plane sample count 0 or >= 2 (a standard error needs two)."""
+    from randmedia.studies.debye3d import systems
+
+    problems = []
+    media = section["media"]
+    for key in ("a", "lc"):
+        if media[key] >= media["N"] / 2:
+            problems.append(f"config key 'debye3d.media.{key}': {media[key]:g} must be < N/2 = "
+                            f"{media['N'] / 2:g} (beyond half the periodic image a distance is not unique)")
+    if section["poisson_planes"]["n_samples"] == 1:
+        problems.append("config key 'debye3d.poisson_planes.n_samples': 1 leaves no standard "
+                        "error; use 0 (no Poisson planes) or >= 2")
+    for name, params in systems(section).items():
+        if params["s2_r_max"] >= params["N"] / 2:
+            problems.append(
+                f"config key 'debye3d.s2.r_max_over_length': S2 of {name} out to "
+                f"{params['s2_r_max']:g} voxels must be < N/2 = {params['N'] / 2:g}")
+    return problems
+
+
 CROSS_CHECKS = {
     "debye2020": _debye2020_checks,
     "debye2020.hard_disks": _debye2020_hard_disks_checks,
@@ -445,6 +467,7 @@ CROSS_CHECKS = {
     "mrj2016.equilibrium": _mrj2016_equilibrium_checks,
     "mrj2016.mrj": _mrj2016_jammed_checks,
     "sphere2019": _sphere2019_checks,
+    "debye3d": _debye3d_checks,
 }
 
 

@@ -1,0 +1,159 @@
+"""Protocol of the 3D Debye study (issue 13, beyond the papers; docs/debye3d.md).
+
+Systems: Yeong-Torquato constructions of the Debye S2 (Ma & Torquato 2020, Eq. 21) on
+periodic N^3 voxels (kind ``yt``), Poisson-plane tessellations with independently coloured
+cells -- exactly the same S2, a different microstructure, observed in a non-periodic window
+(``planes``) -- and digitized overlapping spheres (``spheres``), whose descriptors are known
+exactly in 3D (:mod:`randmedia.theory.overlapping`) and validate every estimator first.
+
+This module turns a system's parameters (one entry of the workflow's system table) and its
+sample images into the descriptor datasets: which estimator, which exact reference, which
+ranges (in units of the system's length: a for the Debye media, R for the spheres).
+"""
+
+from __future__ import annotations
+
+import functools
+from typing import Callable, Mapping
+
+import numpy as np
+import xarray as xr
+
+from randmedia.describe.two_phase import RadialBinning, s2_discrepancy, two_point_function
+from randmedia.describe.window import window_binning, window_s2_samples
+from randmedia.generate.voxel_images import VOXEL_IMAGE
+from randmedia.io import read_dataset
+from randmedia.stats import standard_error
+from randmedia.theory import overlapping
+from randmedia.theory.debye import debye_s2
+
+#: the three kinds of 3D media (module docstring)
+KINDS = ("yt", "planes", "spheres")
+
+
+def system_length(params: Mapping) -> float:
+    """The system's length unit in voxels: a (Debye media) or the sphere radius R."""
+    return float(params["radius"] if params["kind"] == "spheres" else params["a"])
+
+
+def read_voxel_images(paths) -> tuple[np.ndarray, bool]:
+    """Stack the ``phase`` images of the sample files; (images (n, nz, ny, nx) uint8, periodic).
+    All files must agree on being periodic cells or windows."""
+    images, periodic = [], set()
+    for path in paths:
+        ds = read_dataset(path, VOXEL_IMAGE, attrs=["periodic"])
+        images.append(ds["phase"].values)
+        periodic.add(bool(ds.attrs["periodic"]))
+    if len(periodic) != 1:
+        raise ValueError(f"samples mix periodic cells and windows: {list(map(str, paths))}")
+    return np.stack(images), periodic.pop()
+
+
+def exact_void_s2(params: Mapping) -> Callable[[np.ndarray], np.ndarray]:
+    """S2 of the void (phase 1) that the system has exactly: Debye, phi1^2 + phi1 phi2 e^(-r/a)
+    (Eq. 21 with chi_V unchanged by swapping the phases), or overlapping spheres (Eq. 32, d = 3)."""
+    phi2 = float(params["phi2"])
+    if params["kind"] == "spheres":
+        return functools.partial(overlapping.s2_void, radius=float(params["radius"]), phi2=phi2, dim=3)
+
+    def debye_void(r):
+        return debye_s2(r, 1.0 - phi2, float(params["a"]))
+
+    return debye_void
+
+
+def s2_dataset(images: np.ndarray, periodic: bool, params: Mapping) -> xr.Dataset:
+    """S2 of the void phase (image value 0) out to ``params["s2_r_max"]`` voxels, per sample,
+    mean and SEM, with the exact bin average ``S2_exact``; periodic estimator for periodic
+    cells, window estimator for windows (:mod:`randmedia.describe.window`). For the
+    constructions also Delta S2 of phase 2 per sample over 0 < r <= l_c (Sec. IV).
+
+    Parameters
+    ----------
+    images : ndarray, shape (n_samples, nz, ny, nx)
+        0/1 images, 1 = phase 2.
+    periodic : bool
+        Periodic cells (True) or windows of a non-periodic medium.
+    params : Mapping
+        The system's parameters: ``kind``, ``phi2``, ``a`` or ``radius``, ``s2_r_max``
+        (voxels), and ``lc`` for the constructions.
+
+    Returns
+    -------
+    xarray.Dataset
+        ``S2``, ``S2_sem``, ``S2_samples``, ``S2_exact`` on ``r`` (voxels), ``phi_samples``;
+        ``delta_S2`` per sample for the constructions.
+    """
+    r_max = float(params["s2_r_max"])
+    exact = exact_void_s2(params)
+    shape = images.shape[1:]
+    if periodic:
+        s2 = two_point_function(images, phase=0, r_max=r_max)
+        binning = RadialBinning.build(shape, r_max)
+    else:
+        binning = window_binning(shape, r_max)
+        curves = window_s2_samples(images, 0, r_max)
+        s2 = xr.Dataset(
+            {"S2_samples": (("sample", "r"), curves, {"units": "1", "long_name":
+                            "window two-point function of phase 0 per sample"}),
+             "S2": ("r", curves.mean(axis=0), {"units": "1", "long_name":
+                    "window two-point function of phase 0, sample mean"}),
+             "S2_sem": ("r", standard_error(curves), {"units": "1", "long_name":
+                        "standard error of the mean of S2 over samples"}),
+             "phi_samples": ("sample", (images == 0).mean(axis=(1, 2, 3)),
+                             {"units": "1", "long_name": "volume fraction of phase 0 per sample"})},
+            coords={"r": ("r", binning.r_mean, {"units": "pixel", "long_name":
+                          "mean distance of the voxel pairs in the bin"}),
+                    "sample": ("sample", np.arange(images.shape[0]), {"units": "1",
+                               "long_name": "sample index"})},
+            attrs={"phase": 0, "bin_width": 1.0, "r_max": r_max, "estimator": "window"})
+    s2["S2_exact"] = ("r", binning.average_of(exact), {"units": "1", "long_name":
+                      "exact S2 of the void, averaged over the bin's displacements"})
+    s2["r"].attrs["units"] = "voxel"
+    if params["kind"] == "yt":
+        phase2 = two_point_function(images, phase=1, r_max=float(params["lc"]))
+        target = functools.partial(debye_s2, phi2=float(params["phi2"]), a=float(params["a"]))
+        s2["delta_S2"] = ("sample", s2_discrepancy(phase2, target, shape), {"units": "1",
+                          "long_name": "mean |S2 - target| over bins 0 < r <= l_c (the constructed range)"})
+    s2.attrs.update({key: value for key, value in params.items()
+                     if isinstance(value, (int, float, str)) and not isinstance(value, bool)})
+    s2.attrs["periodic"] = int(periodic)
+    return s2
+
+
+def systems(section: Mapping) -> dict[str, dict]:
+    """The study's systems from the config section ``debye3d``: name -> parameters.
+
+    ``yt_phi{phi2}`` for every configured phi2 (N, a, l_c, schedule of ``media``),
+    ``planes_phi{phi2}`` beside each when ``poisson_planes.n_samples`` > 0 (same N, a),
+    and ``spheres_phi{phi2}`` from ``overlapping_spheres``. Every entry carries ``kind``,
+    ``phi2``, ``N``, ``n_samples`` and its length (``a`` or ``radius``) and ``s2_r_max`` =
+    ``s2.r_max_over_length`` x that length, in voxels.
+
+    Parameters
+    ----------
+    section : Mapping
+        The validated ``debye3d`` config section.
+
+    Returns
+    -------
+    dict
+        System name -> parameter dict.
+    """
+    media, planes, spheres = section["media"], section["poisson_planes"], section["overlapping_spheres"]
+    ratio = float(section["s2"]["r_max_over_length"])
+    out = {}
+    for phi2 in media["phi2"]:
+        common = {"phi2": float(phi2), "N": int(media["N"]), "a": float(media["a"])}
+        out[f"yt_phi{phi2:g}"] = {"kind": "yt", **common, "lc": float(media["lc"]),
+                                  "schedule": dict(media["schedule"]),
+                                  "n_samples": int(media["n_samples"])}
+        if planes["n_samples"] > 0:
+            out[f"planes_phi{phi2:g}"] = {"kind": "planes", **common,
+                                          "n_samples": int(planes["n_samples"])}
+    out[f"spheres_phi{spheres['phi2']:g}"] = {
+        "kind": "spheres", "phi2": float(spheres["phi2"]), "N": int(spheres["N"]),
+        "radius": float(spheres["radius"]), "n_samples": int(spheres["n_samples"])}
+    for params in out.values():
+        params["s2_r_max"] = ratio * system_length(params)
+    return out
