@@ -65,3 +65,28 @@ def test_hard_disk_lineal_path_and_chords_are_consistent():
     assert mean / phi1 * second == pytest.approx(hard_disks.chord_density_void(z, radius, phi2), rel=1e-5)
     with pytest.raises(ValueError):
         hard_disks.specific_surface(10.0, 1.2)
+
+
+def test_3d_conjectures_eqs_44_45_as_printed_and_their_limits():
+    from randmedia.theory import debye_formulas as formulas
+
+    phi2, a = 0.3, 4.0
+    phi1 = 1 - phi2
+    r = np.array([0.5, 1.0, 4.0, 9.0])
+    decay = np.exp(-r / a)
+    s2_void = phi1 * phi2 * decay + phi1**2
+    np.testing.assert_allclose(formulas.debye_surface_void(r, phi2, a, dim=3),
+                               4 * phi2 / a / (1 + decay) * s2_void, rtol=1e-14)  # Eq. (44)
+    np.testing.assert_allclose(formulas.debye_surface_surface(r, phi2, a, dim=3),
+                               16 / a**2 * phi1**2 * phi2**2 + 2 / (a * r) * phi1 * phi2 * decay
+                               + decay / (2 * a**2 * (1 + decay)) * abs(phi2 - phi1), rtol=1e-14)  # (45)
+    s = formulas.debye_surface_specific(phi2, a, dim=3)
+    assert s == pytest.approx(4 * phi1 * phi2 / a)
+    assert formulas.debye_surface_void(0.0, phi2, a, dim=3) == pytest.approx(s / 2)
+    assert formulas.debye_surface_void(1e4, phi2, a, dim=3) == pytest.approx(s * phi1)
+    assert formulas.debye_surface_surface(1e4, phi2, a, dim=3) == pytest.approx(s * s)
+    tiny = 1e-7
+    assert tiny * formulas.debye_surface_surface(tiny, phi2, a, dim=3) == pytest.approx(s / 2, rel=1e-5)
+    assert formulas.debye_surface_specific(phi2, a) == pytest.approx(np.pi * phi1 * phi2 / a)
+    with pytest.raises(ValueError, match="dim"):
+        formulas.debye_surface_surface(r, phi2, a, dim=4)

@@ -23,9 +23,47 @@ def _check(phi2: float, a: float) -> None:
         raise ValueError(f"a must be > 0, got {a}")
 
 
-def debye_surface_void(r, phi2: float, a: float) -> np.ndarray:
+#: s = c_d phi1 phi2 / a from Eq. (7) (S2'(0) = -s/pi in 2D, -s/4 in 3D) and Eq. (21)
+SURFACE_COEFFICIENT = {2: np.pi, 3: 4.0}
+#: F_ss ~ s / (c r) as r -> 0 (c = pi in 2D, 2 in 3D): the pair term of Eqs. (26) and (45) is
+#: PAIR_COEFFICIENT phi1 phi2 e^{-r/a} / (a r)
+PAIR_COEFFICIENT = {2: 1.0, 3: 2.0}
+
+
+def _check_dim(dim: int) -> None:
+    if dim not in SURFACE_COEFFICIENT:
+        raise ValueError(f"dim must be 2 or 3, got {dim}")
+
+
+def debye_surface_specific(phi2: float, a: float, dim: int = 2) -> float:
+    """Specific surface of Debye random media: Eq. (22) in 2D, pi phi1 phi2 / a; in 3D
+    4 phi1 phi2 / a (Eq. 7 with S2'(0) = -s/4; Sec. VII).
+
+    Parameters
+    ----------
+    phi2 : float
+        Volume fraction of phase 2, in (0, 1).
+    a : float
+        Correlation length of Eq. (21), > 0.
+    dim : int, optional
+        Dimension, 2 or 3.
+
+    Returns
+    -------
+    float
+        s (1/length).
+    """
+    _check(phi2, a)
+    _check_dim(dim)
+    if dim == 2:
+        return debye_specific_surface(phi2, a)
+    return SURFACE_COEFFICIENT[dim] * phi2 * (1.0 - phi2) / a
+
+
+def debye_surface_void(r, phi2: float, a: float, dim: int = 2) -> np.ndarray:
     """Eqs. (24)-(25): F_sv(r) = s (1 - phi2 + phi2 e^{-r/a}) / (1 + e^{-r/a}), s of Eq. (22);
-    F_sv(0) = s/2, F_sv(inf) = s phi1 (void = phase 1).
+    F_sv(0) = s/2, F_sv(inf) = s phi1 (void = phase 1). In 3D (``dim=3``) the conjecture
+    Eq. (44), (4 phi2 / a) S2^(1)(r) / (1 + e^{-r/a}), which is the same form with the 3D s.
 
     Parameters
     ----------
@@ -35,6 +73,8 @@ def debye_surface_void(r, phi2: float, a: float) -> np.ndarray:
         Volume fraction of phase 2, in (0, 1).
     a : float
         Correlation length of Eq. (21), > 0.
+    dim : int, optional
+        Dimension, 2 (Eq. 24) or 3 (Eq. 44).
 
     Returns
     -------
@@ -43,12 +83,14 @@ def debye_surface_void(r, phi2: float, a: float) -> np.ndarray:
     """
     _check(phi2, a)
     decay = np.exp(-np.asarray(r, dtype=float) / a)
-    return debye_specific_surface(phi2, a) * (1.0 - phi2 + phi2 * decay) / (1.0 + decay)
+    return debye_surface_specific(phi2, a, dim) * (1.0 - phi2 + phi2 * decay) / (1.0 + decay)
 
 
-def debye_surface_surface(r, phi2: float, a: float) -> np.ndarray:
+def debye_surface_surface(r, phi2: float, a: float, dim: int = 2) -> np.ndarray:
     """Eq. (26): F_ss(r) = (pi^2/a^2) phi1^2 phi2^2 + phi1 phi2 e^{-r/a} / (a r)
     + e^{-r/a} |phi2 - phi1| / (2 a^2 (1 + e^{-r/a})); diverges as s/(pi r) at r -> 0.
+    In 3D (``dim=3``) the conjecture Eq. (45): (16/a^2) phi1^2 phi2^2 + 2 phi1 phi2
+    e^{-r/a} / (a r) + the same last term; s^2 at large r, s/(2 r) at r -> 0.
 
     Parameters
     ----------
@@ -58,6 +100,8 @@ def debye_surface_surface(r, phi2: float, a: float) -> np.ndarray:
         Volume fraction of phase 2, in (0, 1).
     a : float
         Correlation length of Eq. (21), > 0.
+    dim : int, optional
+        Dimension, 2 (Eq. 26) or 3 (Eq. 45).
 
     Returns
     -------
@@ -65,12 +109,14 @@ def debye_surface_surface(r, phi2: float, a: float) -> np.ndarray:
         F_ss(r) (units 1/length^2), same shape as ``r``.
     """
     _check(phi2, a)
+    _check_dim(dim)
     r = np.asarray(r, dtype=float)
     q = phi2 * (1.0 - phi2)
     decay = np.exp(-r / a)
     with np.errstate(divide="ignore"):
-        pair = q * decay / (a * r)
-    return (np.pi * q / a) ** 2 + pair + decay / (1.0 + decay) * abs(1.0 - 2.0 * phi2) / (2.0 * a * a)
+        pair = PAIR_COEFFICIENT[dim] * q * decay / (a * r)
+    return ((SURFACE_COEFFICIENT[dim] * q / a) ** 2 + pair
+            + decay / (1.0 + decay) * abs(1.0 - 2.0 * phi2) / (2.0 * a * a))
 
 
 def debye_euler_characteristic(phi2: float, a: float) -> float:
