@@ -457,6 +457,12 @@ def _debye3d_checks(section: dict, config: dict) -> list[str]:
             problems.append(
                 f"config key 'debye3d.s2.r_max_over_length': S2 of {name} out to "
                 f"{params['s2_r_max']:g} voxels must be < N/2 = {params['N'] / 2:g}")
+        length = params["s2_r_max"] / section["s2"]["r_max_over_length"]
+        r_max = section["interface"]["r_max_over_length"] * length
+        if params["kind"] != "planes" and r_max >= params["N"] / 2:
+            problems.append(
+                f"config key 'debye3d.interface.r_max_over_length': F_sv, F_ss of {name} out to "
+                f"{r_max:g} voxels must be < N/2 = {params['N'] / 2:g}")
     return problems
 
 

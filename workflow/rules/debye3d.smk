@@ -9,6 +9,7 @@
 
 import re
 
+from randmedia.studies.debye3d import LEVEL_SET_KINDS as DEBYE3D_LEVEL_SET_KINDS
 from randmedia.studies.debye3d import systems as debye3d_systems
 
 DEBYE3D_SYSTEMS = debye3d_systems(config["debye3d"])
@@ -80,6 +81,64 @@ rule debye3d_s2:
         "../scripts/debye3d/s2.py"
 
 
+DEBYE3D_SURFACE = results_path("debye3d/descriptors/{system}_surface.nc")
+DEBYE3D_PORES = results_path("debye3d/descriptors/{system}_pores.nc")
+DEBYE3D_CHORDS = results_path("debye3d/descriptors/{system}_chords.nc")
+#: the periodic systems, which get the level-set descriptors (randmedia.studies.debye3d)
+DEBYE3D_LEVEL_SET_SYSTEMS = [name for name, p in DEBYE3D_SYSTEMS.items()
+                             if p["kind"] in DEBYE3D_LEVEL_SET_KINDS]
+DEBYE3D_LEVEL_SET_SYSTEM = "|".join(re.escape(name) for name in DEBYE3D_LEVEL_SET_SYSTEMS)
+
+
+rule debye3d_level_set:
+    """F_sv, F_ss, s, wrapping and pore sizes of a periodic system on level sets tuned to the exact s."""
+    input:
+        samples=debye3d_samples,
+        code=script_sources("../scripts/debye3d/level_set.py"),
+    output:
+        surface=DEBYE3D_SURFACE,
+        pores=DEBYE3D_PORES,
+    wildcard_constraints:
+        system=DEBYE3D_LEVEL_SET_SYSTEM,
+    params:
+        system=debye3d_params,
+        interface=config["debye3d"]["interface"],
+        seed=config["seed"],
+    benchmark:
+        results_path("debye3d/benchmarks/level_set_{system}.tsv")
+    log:
+        results_path("debye3d/logs/level_set_{system}.log"),
+    threads: 1
+    resources:
+        mem_mb=6000,
+    script:
+        "../scripts/debye3d/level_set.py"
+
+
+rule debye3d_chords:
+    """L(z) and p(z) of the void of a periodic system, lines in many directions."""
+    input:
+        samples=debye3d_samples,
+        code=script_sources("../scripts/debye3d/chords.py"),
+    output:
+        DEBYE3D_CHORDS,
+    wildcard_constraints:
+        system=DEBYE3D_LEVEL_SET_SYSTEM,
+    params:
+        system=debye3d_params,
+        chords=config["debye3d"]["chords"],
+        seed=config["seed"],
+    benchmark:
+        results_path("debye3d/benchmarks/chords_{system}.tsv")
+    log:
+        results_path("debye3d/logs/chords_{system}.log"),
+    threads: 1
+    resources:
+        mem_mb=2000,
+    script:
+        "../scripts/debye3d/chords.py"
+
+
 DEBYE3D_FIGURE = results_path("debye3d/figures/{name}.pdf")
 DEBYE3D_DEBYE_SYSTEMS = [name for name, p in DEBYE3D_SYSTEMS.items() if p["kind"] != "spheres"]
 
@@ -121,10 +180,34 @@ rule debye3d_figure_s2:
         "../scripts/debye3d/figure.py"
 
 
+DEBYE3D_FIGURES = ("media", "s2", "surface", "pores", "chords")
+
+
+for _name, _files in (("surface", DEBYE3D_SURFACE), ("pores", DEBYE3D_PORES), ("chords", DEBYE3D_CHORDS)):
+
+    rule:
+        name:
+            f"debye3d_figure_{_name}"
+        input:
+            descriptors=expand(_files, system=DEBYE3D_LEVEL_SET_SYSTEMS),
+            code=script_sources("../scripts/debye3d/figure.py"),
+        output:
+            **debye3d_figure_outputs(_name),
+        params:
+            figure=_name,
+        log:
+            results_path(f"debye3d/logs/figure_{_name}.log"),
+        script:
+            "../scripts/debye3d/figure.py"
+
+
 rule debye3d_comparison:
     """Every system against exact values, the issue's goals and the 3D conjectures."""
     input:
         s2=expand(DEBYE3D_S2, system=DEBYE3D_SYSTEMS),
+        surface=expand(DEBYE3D_SURFACE, system=DEBYE3D_LEVEL_SET_SYSTEMS),
+        pores=expand(DEBYE3D_PORES, system=DEBYE3D_LEVEL_SET_SYSTEMS),
+        chords=expand(DEBYE3D_CHORDS, system=DEBYE3D_LEVEL_SET_SYSTEMS),
         code=script_sources("../scripts/debye3d/comparison.py"),
     output:
         comparison=results_path("debye3d/comparison.csv"),
@@ -139,8 +222,7 @@ rule debye3d_comparison:
 
 DEBYE3D_TARGETS = [
     *expand(DEBYE3D_S2, system=DEBYE3D_SYSTEMS),
-    *debye3d_figure_outputs("media").values(),
-    *debye3d_figure_outputs("s2").values(),
+    *[path for name in DEBYE3D_FIGURES for path in debye3d_figure_outputs(name).values()],
     *rules.debye3d_comparison.output,
 ]
 

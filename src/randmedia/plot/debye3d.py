@@ -2,7 +2,8 @@
 
 Registry :data:`FIGURES` (convention: :mod:`randmedia.plot.rule`): ``media`` (a mid-plane
 slice of one sample per volume fraction, constructions above Poisson planes), ``s2`` (the
-autocovariance of every system against its exact form).
+autocovariance of every system against its exact form), ``surface`` (F_sv, F_ss against the
+conjectures Eqs. 44-45), ``pores`` (F(delta)), ``chords`` (L(z), p(z) against exponentials).
 """
 
 from __future__ import annotations
@@ -113,5 +114,170 @@ def s2(inputs, settings, log):
     return fig
 
 
+def _by_kind(paths):
+    """Descriptor datasets of the level-set systems: (constructions sorted by phi2, spheres)."""
+    yt, spheres = [], []
+    for path in paths:
+        ds = xr.load_dataset(path)
+        (spheres if ds.attrs["kind"] == "spheres" else yt).append(ds)
+    return sorted(yt, key=lambda ds: float(ds.attrs["phi2"])), spheres
+
+
+def surface(inputs, settings, log):
+    """F_sv(r) a and F_ss(r) a^2 of the constructions against the conjectures Eqs. (44)-(45)
+    (dashed), and the overlapping spheres' F_sv / s, F_ss / s^2 against exact (validation).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``descriptors``: surface files of the periodic systems.
+    settings : dict
+        unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from randmedia.theory import overlapping
+    from randmedia.theory.debye_formulas import debye_surface_surface, debye_surface_void
+
+    yt, spheres = _by_kind(inputs["descriptors"])
+    fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=0.9)
+    for ds in yt:
+        a, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
+        r = ds["r"].values
+        keep = r > 0
+        fine = np.linspace(max(r[keep][0], 0.05 * a), r[-1], 200)
+        line = axes[0].errorbar(r[keep] / a, a * ds["F_sv"].values[keep], yerr=a * ds["F_sv_sem"].values[keep],
+                                fmt="o", ms=1.5, lw=0.5, label=f"$\\phi_2$ = {phi2:g}")
+        colour = line[0].get_color()
+        axes[0].plot(fine / a, a * debye_surface_void(fine, phi2, a, dim=3), "--", lw=0.8, color=colour)
+        axes[1].errorbar(r[keep] / a, a * a * ds["F_ss"].values[keep], yerr=a * a * ds["F_ss_sem"].values[keep],
+                         fmt="o", ms=1.5, lw=0.5, color=colour)
+        axes[1].plot(fine / a, a * a * debye_surface_surface(fine, phi2, a, dim=3), "--", lw=0.8, color=colour)
+    for ds in spheres:
+        radius, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
+        s_exact = float(ds.attrs["s_exact"])
+        r = ds["r"].values
+        keep = r > 0
+        axes[2].errorbar(r[keep] / radius, ds["F_sv"].values[keep] / s_exact, fmt="o", ms=1.5, lw=0.5,
+                         yerr=ds["F_sv_sem"].values[keep] / s_exact, label="$F_{sv}/s$")
+        axes[2].errorbar(r[keep] / radius, ds["F_ss"].values[keep] / s_exact**2, fmt="s", ms=1.5, lw=0.5,
+                         yerr=ds["F_ss_sem"].values[keep] / s_exact**2, label="$F_{ss}/s^2$")
+        fine = np.linspace(r[keep][0], r[-1], 300)
+        axes[2].plot(fine / radius, overlapping.surface_void(fine, radius, phi2, dim=3) / s_exact, "k-", lw=0.7)
+        axes[2].plot(fine / radius, overlapping.surface_surface(fine, radius, phi2, dim=3) / s_exact**2,
+                     "k-", lw=0.7)
+        axes[2].set_ylim(0, 3)
+    axes[0].set_ylabel(r"$a F_{sv}(r)$ (dashed: Eq. 44)")
+    axes[1].set_ylabel(r"$a^2 F_{ss}(r)$ (dashed: Eq. 45)")
+    axes[1].set_yscale("log")
+    axes[2].set_ylabel("overlapping spheres (lines: exact)")
+    for ax, label in zip(axes, ("r / a", "r / a", "r / R")):
+        ax.set_xlabel(label)
+        if ax.has_data():
+            ax.legend(fontsize=5)
+    return fig
+
+
+def pores(inputs, settings, log):
+    """F(delta) of the constructions per phi2 (against delta / a) and of the overlapping
+    spheres against their exact F (Eq. 36, d = 3).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``descriptors``: pore-size files of the periodic systems.
+    settings : dict
+        unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from randmedia.theory import overlapping
+
+    yt, spheres = _by_kind(inputs["descriptors"])
+    fig, axes = figure(ncols=2, nrows=1, width=PAGE_WIDTH, aspect=0.7)
+    for ds in yt:
+        a, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
+        delta = ds["delta"].values
+        axes[0].errorbar(delta / a, ds["F"].values, yerr=ds["F_sem"].values, fmt="-", lw=0.8,
+                         label=f"$\\phi_2$ = {phi2:g}")
+    for ds in spheres:
+        radius, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
+        delta = ds["delta"].values
+        axes[1].errorbar(delta / radius, ds["F"].values, yerr=ds["F_sem"].values, fmt="o", ms=1.5,
+                         lw=0.5, label="ours")
+        axes[1].plot(delta / radius, overlapping.pore_size_complementary_cdf(delta, radius, phi2, dim=3),
+                     "k-", lw=0.7, label="exact")
+    axes[0].set_xlabel(r"$\delta / a$")
+    axes[0].set_ylabel(r"$F(\delta)$, constructions")
+    axes[1].set_xlabel(r"$\delta / R$")
+    axes[1].set_ylabel(r"$F(\delta)$, overlapping spheres")
+    for ax in axes:
+        ax.set_yscale("log")
+        ax.set_ylim(1e-4, 1.1)
+        if ax.has_data():
+            ax.legend(fontsize=5)
+    return fig
+
+
+def chords(inputs, settings, log):
+    """L(z) and p(z) of the constructions against the exponential forms with the exact slope,
+    phi1 e^(-phi2 z / a) and (phi2 / a) e^(-phi2 z / a) (dashed; L'(0) = -s/4 with the 3D
+    s = 4 phi1 phi2 / a), and the overlapping spheres' L(z) against exact (Eq. 38, d = 3).
+
+    Parameters
+    ----------
+    inputs : dict
+        ``descriptors``: chords files of the periodic systems.
+    settings : dict
+        unused.
+    log : logging.Logger
+        The job's logger (unused).
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    from randmedia.theory import overlapping
+
+    yt, spheres = _by_kind(inputs["descriptors"])
+    fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=0.9)
+    for ds in yt:
+        a, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
+        z, zc = ds["z"].values, ds["z_chord"].values
+        line = axes[0].errorbar(z / a, ds["L"].values, yerr=ds["L_sem"].values, fmt="-", lw=0.8,
+                                label=f"$\\phi_2$ = {phi2:g}")
+        colour = line[0].get_color()
+        axes[0].plot(z / a, (1 - phi2) * np.exp(-phi2 * z / a), "--", lw=0.7, color=colour)
+        axes[1].errorbar(zc / a, a * ds["p"].values, yerr=a * ds["p_sem"].values, fmt="o", ms=1.5,
+                         lw=0.5, color=colour)
+        axes[1].plot(zc / a, phi2 * np.exp(-phi2 * zc / a), "--", lw=0.7, color=colour)
+    for ds in spheres:
+        radius, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
+        z = ds["z"].values
+        axes[2].errorbar(z / radius, ds["L"].values, yerr=ds["L_sem"].values, fmt="o", ms=1.5, lw=0.5,
+                         label="ours")
+        axes[2].plot(z / radius, overlapping.lineal_path_void(z, radius, phi2, dim=3), "k-", lw=0.7,
+                     label="exact")
+    axes[0].set_ylabel("L(z), constructions")
+    axes[1].set_ylabel("a p(z)")
+    axes[2].set_ylabel("L(z), overlapping spheres")
+    for ax, label in zip(axes, ("z / a", "z / a", "z / R")):
+        ax.set_xlabel(label)
+        ax.set_yscale("log")
+        if ax.has_data():
+            ax.legend(fontsize=5)
+    axes[0].set_ylim(1e-3, 1)
+    axes[1].set_ylim(1e-3, 1)
+    return fig
+
+
 #: figure key -> function (see :mod:`randmedia.plot.rule`)
-FIGURES = {"media": media, "s2": s2}
+FIGURES = {"media": media, "s2": s2, "surface": surface, "pores": pores, "chords": chords}

@@ -157,3 +157,102 @@ def systems(section: Mapping) -> dict[str, dict]:
     for params in out.values():
         params["s2_r_max"] = ratio * system_length(params)
     return out
+
+
+#: kinds whose level-set descriptors (surface functions, pores, chords) are computed: the
+#: periodic ones. The Poisson-plane windows are not periodic and these estimators wrap around
+#: the image (their seam would add interface that is not there); they get S2 only, by the
+#: window estimator.
+LEVEL_SET_KINDS = ("yt", "spheres")
+
+
+def exact_specific_surface(params: Mapping) -> float:
+    """The exact specific surface of the system: 4 phi1 phi2 / a for the Debye media (3D,
+    Eq. 7 with Eq. 21) and that of overlapping spheres (Eq. 34 in 3D)."""
+    from randmedia.theory.debye_formulas import debye_surface_specific
+
+    if params["kind"] == "spheres":
+        return float(overlapping.specific_surface(float(params["radius"]), float(params["phi2"]), dim=3))
+    return float(debye_surface_specific(float(params["phi2"]), float(params["a"]), dim=3))
+
+
+def level_set_datasets(images: np.ndarray, params: Mapping, interface: Mapping,
+                       rng: np.random.Generator, log=None) -> tuple[xr.Dataset, xr.Dataset]:
+    """F_sv, F_ss, s and wrapping (surface) and F, P, <delta> (pores) of the void of one
+    system's periodic 3D images, on Ma-Torquato level sets whose Gaussian width is tuned so
+    that their mean specific surface is the exact one (as for the 2D media, Sec. V A).
+
+    Parameters
+    ----------
+    images : ndarray, shape (n_samples, nz, ny, nx)
+        Periodic 0/1 images, void = 0.
+    params : Mapping
+        The system's parameters (:func:`systems`).
+    interface : Mapping
+        The config section ``debye3d.interface`` (model, supersample, sigma_bracket,
+        r_max_over_length, bin_width, bin_weighting, delta_bin, delta_max_over_length,
+        k_candidates).
+    rng : numpy.random.Generator
+        Source of the pore-size query points.
+    log : logging.Logger, optional
+        Progress log.
+
+    Returns
+    -------
+    surface, pores : xarray.Dataset
+        :func:`randmedia.describe.surface.surface_functions` and
+        :func:`randmedia.describe.pore_size.pore_size_functions` outputs, with attributes
+        ``sigma``, ``s_exact``, ``s_tuned``, ``length_scale``, ``kind``, ``phi2``.
+    """
+    from randmedia.describe.pore_size import pore_size_functions
+    from randmedia.describe.surface import surface_functions, tune_sigma
+
+    length = system_length(params)
+    s_exact = exact_specific_surface(params)
+    sigma, s_tuned = tune_sigma(images, s_exact, supersample=interface["supersample"],
+                                model=interface["model"], bracket=tuple(interface["sigma_bracket"]),
+                                log=log)
+    common = dict(sigma=sigma, supersample=interface["supersample"], model=interface["model"])
+    surface = surface_functions(images, r_max=interface["r_max_over_length"] * length,
+                                bin_width=interface["bin_width"],
+                                bin_weighting=interface["bin_weighting"], log=log, **common)
+    pores = pore_size_functions(images, rng, delta_max=interface["delta_max_over_length"] * length,
+                                delta_bin=interface["delta_bin"],
+                                k_candidates=interface["k_candidates"], log=log, **common)
+    attrs = {"kind": params["kind"], "phi2": float(params["phi2"]), "length_scale": length,
+             "s_exact": s_exact, "s_tuned": s_tuned, "image_side": int(images.shape[-1])}
+    for ds in (surface, pores):
+        ds.attrs.update(attrs)
+    return surface, pores
+
+
+def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
+                   rng: np.random.Generator) -> xr.Dataset:
+    """L(z) and p(z) of the void of one system's periodic 3D images along lines in many
+    directions (:func:`randmedia.describe.chords.lineal_path_and_chords`).
+
+    Parameters
+    ----------
+    images : ndarray, shape (n_samples, nz, ny, nx)
+        Periodic 0/1 images, void = 0.
+    params : Mapping
+        The system's parameters (:func:`systems`).
+    chords : Mapping
+        The config section ``debye3d.chords`` (z_max_over_length and the sampling keywords).
+    rng : numpy.random.Generator
+        Source of the directions and origins.
+
+    Returns
+    -------
+    xarray.Dataset
+        With attributes ``kind``, ``phi2``, ``length_scale``, ``s_exact``.
+    """
+    from randmedia.describe.chords import lineal_path_and_chords
+
+    sampling = dict(chords)
+    length = system_length(params)
+    z_max = sampling.pop("z_max_over_length") * length
+    out = lineal_path_and_chords(images, 0, rng, z_max=z_max, **sampling)
+    out.attrs.update({"kind": params["kind"], "phi2": float(params["phi2"]), "length_scale": length,
+                      "s_exact": exact_specific_surface(params)})
+    return out
