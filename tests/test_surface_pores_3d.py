@@ -133,8 +133,10 @@ def test_surface_functions_of_one_sphere_are_exact():
     """One sphere of radius rho in the periodic box: the distance between two random points
     of its surface has density r / (2 rho^2), so F_ss(r) = s / (2 r) for r < 2 rho; a sphere
     of radius r about a surface point has the fraction (1 + r / (2 rho)) / 2 outside, so
-    F_sv(r) = s (1 + r / (2 rho)) / 2 (void = outside). From 2 sub-voxels on the deposit's
-    smearing leaves < 1 % (measured <= 0.5 % for F_ss, 0.1 % for F_sv)."""
+    F_sv(r) = s (1 + r / (2 rho)) / 2 (void = outside). Measured with equal lattice weights:
+    at 2 sub-voxels (r = 0.55) F_ss is 0.24 % and F_sv 0.44 % low (the deposit's smearing),
+    from 1 voxel on F_ss within 1e-4 and F_sv within 0.22 % -- no bin-to-bin alternation
+    in 3D shells."""
     side, m, rho = 32, 4, 7.3
     level_set = analytic_level_set_3d(
         lambda x, y, z: np.sqrt((x - 15.7) ** 2 + (y - 16.2) ** 2 + (z - 15.9) ** 2) - rho, side, m)
@@ -147,8 +149,11 @@ def test_surface_functions_of_one_sphere_are_exact():
     exact_sv = binning.average_of(lambda d: s * (1 + d / m / (2 * rho)) / 2)
     r = binning.r_mean / m
     window = r >= 2.0 / m
-    assert np.abs(result["F_ss"][window] / exact_ss[window] - 1).max() < 0.01
-    assert np.abs(result["F_sv"][window] / exact_sv[window] - 1).max() < 0.01
+    assert np.abs(result["F_ss"][window] / exact_ss[window] - 1).max() < 0.004
+    assert np.abs(result["F_sv"][window] / exact_sv[window] - 1).max() < 0.006
+    window = r >= 1.0
+    assert np.abs(result["F_ss"][window] / exact_ss[window] - 1).max() < 5e-4
+    assert np.abs(result["F_sv"][window] / exact_sv[window] - 1).max() < 0.003
     assert result["euler"] * side**3 == pytest.approx(1.0)
     assert result["wraps_phase1"] and not result["wraps_phase2"]  # the void wraps, the ball not
 

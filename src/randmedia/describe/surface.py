@@ -52,7 +52,7 @@ region (:func:`randmedia.describe.isosurface.euler_characteristic_3d`). The dire
 weights of :class:`~randmedia.describe.two_phase.RadialBinning` are defined in 2D only, so
 3D bins weight every lattice displacement equally (``bin_weighting="lattice"``, the 3D
 default); a 3D shell of half-voxel width holds ~4 pi r^2 w lattice points spread over all
-directions (thousands from r = 2 voxels on at 4 sub-voxels per voxel), which is what the
+directions (~1600 at r = 2 voxels with 4 sub-voxels per voxel), which is what the
 2D alternation lacked. Units: pixel in 2D, voxel in 3D (``1/voxel``, ``1/voxel^2``; the
 Euler characteristic per volume ``1/voxel^3``). The 3D surface functions are what the
 conjectures Eqs. 44-45 for 3D Debye media are tested with (s = 4 phi1 phi2 / a there).
