@@ -1,4 +1,4 @@
-"""Specific surface and surface correlation functions of periodic digitized 2D media.
+"""Specific surface and surface correlation functions of periodic digitized 2D and 3D media.
 
 Ma & Torquato 2020, Sec. II B: with the interface indicator M(x) = |grad I(x)|
 (Eq. 9), s = <M> (Eq. 10), F_sv(r) = <M(x) I_void(x + r)> (Eq. 11) and
@@ -44,8 +44,20 @@ The deposit smears the interface over about one sub-pixel (1/4 pixel by
 default): F_ss (which diverges as s/(pi r) at r -> 0) is reliable from about
 two sub-pixels on, F_sv everywhere except its first bin.
 
-The interface extraction is 2D (marching squares); the correlation and binning
-steps are dimension-generic.
+3D (voxel images, stacks of shape (n, nz, ny, nx)): the same level-set medium on the
+sub-voxel grid; the interface is extracted by marching tetrahedra as triangles and their
+area deposited cloud-in-cell (:mod:`randmedia.describe.isosurface`), so s = <M> is exactly
+the triangulated area per volume; the Euler characteristic is that of the piecewise-linear
+region (:func:`randmedia.describe.isosurface.euler_characteristic_3d`). The direction-average
+weights of :class:`~randmedia.describe.two_phase.RadialBinning` are defined in 2D only, so
+3D bins weight every lattice displacement equally (``bin_weighting="lattice"``, the 3D
+default); a 3D shell of half-voxel width holds ~4 pi r^2 w lattice points spread over all
+directions (~1600 at r = 2 voxels with 4 sub-voxels per voxel), which is what the
+2D alternation lacked. Units: pixel in 2D, voxel in 3D (``1/voxel``, ``1/voxel^2``; the
+Euler characteristic per volume ``1/voxel^3``). The 3D surface functions are what the
+conjectures Eqs. 44-45 for 3D Debye media are tested with (s = 4 phi1 phi2 / a there).
+
+The correlation and binning steps are dimension-generic.
 """
 
 from __future__ import annotations
@@ -59,6 +71,8 @@ from numba import njit
 from scipy.optimize import brentq
 
 from randmedia.describe.chords import LevelSet, bilinear_stencil
+from randmedia.describe.isosurface import (euler_characteristic_3d, interface_triangles,
+                                           surface_density, triangle_areas)
 from randmedia.describe.percolation import wrapping_directions
 from randmedia.describe.two_phase import RadialBinning
 from randmedia.io import VariableSpec
@@ -211,7 +225,11 @@ def segment_lengths(segments: np.ndarray) -> np.ndarray:
 
 
 def specific_surface_of(level_set: LevelSet) -> float:
-    """Interface length per unit area (1/pixel) of the level set (polyline of marching squares)."""
+    """Interface length per unit area (1/pixel) of the level set (polyline of marching squares);
+    for a 3D level set interface area per unit volume (1/voxel, marching tetrahedra)."""
+    if level_set.fine.ndim == 3:
+        volume = level_set.fine.size * level_set.spacing**3
+        return float(triangle_areas(interface_triangles(level_set)).sum() / volume)
     area = level_set.fine.size * level_set.spacing**2
     return float(segment_lengths(interface_segments(level_set)).sum() / area)
 
@@ -296,7 +314,9 @@ def level_set_descriptors(level_set: LevelSet, binning: RadialBinning) -> dict:
     """s, F_sv, F_ss, S2 of the void phase, the Euler characteristic of phase 2 per area and
     whether phase 2 / phase 1 has a cluster wrapping around the torus
     (:func:`randmedia.describe.percolation.wrapping_directions`), of one level-set medium
-    whose ``phase`` region is the void."""
+    whose ``phase`` region is the void. A 3D level set goes to :func:`_level_set_descriptors_3d`."""
+    if level_set.fine.ndim == 3:
+        return _level_set_descriptors_3d(level_set, binning)
     segments = interface_segments(level_set)
     shape = level_set.fine.shape
     density = interface_density(segments, shape, level_set.spacing)
@@ -318,6 +338,30 @@ def level_set_descriptors(level_set: LevelSet, binning: RadialBinning) -> dict:
     }
 
 
+def _level_set_descriptors_3d(level_set: LevelSet, binning: RadialBinning) -> dict:
+    """:func:`level_set_descriptors` of a 3D level set: interface by marching tetrahedra,
+    M by the cloud-in-cell deposit of the triangles' area, Euler characteristic of the
+    piecewise-linear phase-2 region (equal to the void's on the torus) per volume."""
+    triangles = interface_triangles(level_set)
+    shape = level_set.fine.shape
+    density = surface_density(triangles, shape, level_set.spacing)
+    inside = level_set.inside()
+    volume = level_set.fine.size * level_set.spacing**3
+    chi = euler_characteristic_3d(level_set.fine - level_set.threshold, triangles.shape[0])
+    correlations = _spectra_correlations(
+        {"M": density, "void": inside}, [("M", "void"), ("M", "M"), ("void", "void")])
+    return {
+        "wraps_phase2": bool(wrapping_directions(~inside).any()),
+        "wraps_phase1": bool(wrapping_directions(inside).any()),
+        "s": float(density.mean()),
+        "F_sv": binning.average(correlations[("M", "void")]),
+        "F_ss": binning.average(correlations[("M", "M")]),
+        "S2_void": binning.average(correlations[("void", "void")]),
+        "phi_void": float(inside.mean()),
+        "euler": chi / volume,
+    }
+
+
 #: radial averages of the surface functions: per direction (trapezoid rule in angle) or per
 #: lattice displacement (see :mod:`randmedia.describe.two_phase`)
 BIN_WEIGHTINGS = ("angular", "lattice")
@@ -331,13 +375,14 @@ def surface_binning(fine_shape, supersample: int, r_max: float, bin_width: float
     Parameters
     ----------
     fine_shape : tuple of int
-        Shape of the sub-pixel grid.
+        Shape of the sub-pixel (sub-voxel) grid, 2 or 3 axes.
     supersample : int
         Sub-pixels per pixel along each axis.
     r_max, bin_width : float
-        Largest distance and bin width (pixels).
+        Largest distance and bin width (pixels / voxels).
     bin_weighting : {"angular", "lattice"}, optional
-        Per-direction or per-displacement weights (:data:`BIN_WEIGHTINGS`).
+        Per-direction or per-displacement weights (:data:`BIN_WEIGHTINGS`); "angular" is
+        defined in 2D only and raises ValueError for a 3D grid.
 
     Returns
     -------
@@ -346,34 +391,38 @@ def surface_binning(fine_shape, supersample: int, r_max: float, bin_width: float
     """
     if bin_weighting not in BIN_WEIGHTINGS:
         raise ValueError(f"bin_weighting must be one of {BIN_WEIGHTINGS}, got {bin_weighting!r}")
+    if len(fine_shape) == 3 and bin_weighting == "angular":
+        raise ValueError("bin_weighting='angular' (direction average) is defined for 2D grids "
+                         "only; use 'lattice' in 3D")
     return RadialBinning.build(fine_shape, r_max * supersample, bin_width * supersample,
                                angular=bin_weighting == "angular")
 
 
 def surface_functions(images, *, sigma: float, supersample: int, r_max: float,
-                      bin_width: float, model: str = "pixels", bin_weighting: str = "angular",
+                      bin_width: float, model: str = "pixels", bin_weighting: str | None = None,
                       log=None) -> xr.Dataset:
-    """F_sv(r), F_ss(r) (void = image value 0), s and the specific Euler characteristic of
-    phase 2 for a stack of periodic images, on the level sets of width ``sigma``; per
-    sample, mean and SEM. ``r_max`` and ``bin_width`` in pixels (``bin_width`` a multiple
-    of the sub-pixel spacing 1/supersample); ``bin_weighting``: equal weight per
-    displacement ("lattice") or direction average ("angular") in each bin.
-    ``log``: a logger for progress (rate, ETA).
+    """F_sv(r), F_ss(r) (void = image value 0; Ma & Torquato 2020, Eqs. 11 and 15), s
+    (Eq. 10) and the specific Euler characteristic of phase 2 for a stack of periodic 2D or
+    3D images, on the level sets of width ``sigma``; per sample, mean and SEM. ``r_max`` and
+    ``bin_width`` in pixels / voxels (``bin_width`` a multiple of the sub-pixel spacing
+    1/supersample); ``bin_weighting``: equal weight per displacement ("lattice") or
+    direction average ("angular", 2D only) in each bin; None: "angular" in 2D, "lattice" in
+    3D. ``log``: a logger for progress (rate, ETA).
 
     Parameters
     ----------
-    images : array_like, shape (n_samples, ny, nx)
+    images : array_like, shape (n_samples, ny, nx) or (n_samples, nz, ny, nx)
         Periodic images, void = 0.
     sigma : float
-        Gaussian width of the level sets (pixels).
+        Gaussian width of the level sets (pixels / voxels).
     supersample : int
         Sub-pixels per pixel along each axis.
     r_max, bin_width : float
-        Largest distance and bin width (pixels).
+        Largest distance and bin width (pixels / voxels).
     model : {"pixels", "bilinear"}, optional
         Level-set model (:data:`~randmedia.describe.chords.LEVEL_SET_MODELS`).
     bin_weighting : {"angular", "lattice"}, optional
-        Weights within a bin.
+        Weights within a bin; None: the dimension's default.
     log : logging.Logger, optional
         Progress log.
 
@@ -382,11 +431,18 @@ def surface_functions(images, *, sigma: float, supersample: int, r_max: float,
     xarray.Dataset
         ``F_sv`` (1/pixel), ``F_ss`` (1/pixel^2), ``S2_void`` with ``*_samples`` and
         ``*_sem`` on ``r`` (pixels); per sample ``s_samples``, ``phi_void_samples``,
-        ``euler_samples``, ``wraps_phase1_samples``, ``wraps_phase2_samples``.
+        ``euler_samples``, ``wraps_phase1_samples``, ``wraps_phase2_samples``. In 3D the
+        unit is the voxel (1/voxel, 1/voxel^2, Euler characteristic in 1/voxel^3; attribute
+        ``dimension``).
     """
     images = np.asarray(images)
-    if images.ndim != 3:
-        raise ValueError(f"expected images of shape (n_samples, ny, nx), got {images.shape}")
+    if images.ndim not in (3, 4):
+        raise ValueError(f"expected images of shape (n_samples, ny, nx) or (n_samples, nz, ny, "
+                         f"nx), got {images.shape}")
+    three_d = images.ndim == 4
+    if bin_weighting is None:
+        bin_weighting = "lattice" if three_d else "angular"
+    unit = "voxel" if three_d else "pixel"
     fine_shape = tuple(n * supersample for n in images.shape[1:])
     binning = surface_binning(fine_shape, supersample, r_max, bin_width, bin_weighting)
     progress = Progress(images.shape[0], "surface functions", log, unit="images")
@@ -402,7 +458,7 @@ def surface_functions(images, *, sigma: float, supersample: int, r_max: float,
 
     r = binning.r_mean / supersample
     curves = {name: stack(name) for name in ("F_sv", "F_ss", "S2_void")}
-    units = {"F_sv": "1/pixel", "F_ss": "1/pixel^2", "S2_void": "1"}
+    units = {"F_sv": f"1/{unit}", "F_ss": f"1/{unit}^2", "S2_void": "1"}
     names = {"F_sv": "surface-void correlation function (void = phase 1)",
              "F_ss": "surface-surface correlation function",
              "S2_void": "two-point function of the void phase of the level-set medium"}
@@ -414,28 +470,39 @@ def surface_functions(images, *, sigma: float, supersample: int, r_max: float,
                       {"units": units[name], "long_name": f"{names[name]}, sample mean"})
         data[f"{name}_sem"] = ("r", standard_error(values),
                                {"units": units[name], "long_name": f"standard error of {name} over samples"})
-    data["s_samples"] = ("sample", stack("s"), {"units": "1/pixel", "long_name":
+    data["s_samples"] = ("sample", stack("s"), {"units": f"1/{unit}", "long_name":
+                         "specific surface of the level-set medium (interface area per volume)"
+                         if three_d else
                          "specific surface of the level-set medium (interface length per area)"})
     data["phi_void_samples"] = ("sample", stack("phi_void"), {"units": "1", "long_name":
                                 "void fraction of the level-set medium"})
-    data["euler_samples"] = ("sample", stack("euler"), {"units": "1/pixel^2", "long_name":
-                             "Euler characteristic of phase 2 of the level-set medium per area "
-                             "(bit quads, Gauss-Bonnet)"})
+    if three_d:
+        data["euler_samples"] = ("sample", stack("euler"), {"units": "1/voxel^3", "long_name":
+                                 "Euler characteristic of phase 2 of the level-set medium per "
+                                 "volume (marching tetrahedra, (V - F/2)/2, Gauss-Bonnet)"})
+    else:
+        data["euler_samples"] = ("sample", stack("euler"), {"units": "1/pixel^2", "long_name":
+                                 "Euler characteristic of phase 2 of the level-set medium per area "
+                                 "(bit quads, Gauss-Bonnet)"})
     for phase in (1, 2):
         data[f"wraps_phase{phase}_samples"] = (
             "sample", stack(f"wraps_phase{phase}").astype(np.uint8),
             {"units": "1", "long_name": f"1 if a cluster of phase {phase} of the level-set medium "
-             "wraps around the periodic image (in x or y)"})
+             "wraps around the periodic image (in x or y)" if not three_d else
+             "wraps around the periodic image (in x, y or z)"})
+    attrs = {"sigma": float(sigma), "supersample": int(supersample), "level_set_model": model,
+             "bin_width": float(bin_width), "bin_weighting": bin_weighting,
+             "r_max": float(r_max)}
+    if three_d:
+        attrs["dimension"] = 3
     return xr.Dataset(
         data,
         coords={
-            "r": ("r", r, {"units": "pixel", "long_name": "mean distance of the displacements in the "
+            "r": ("r", r, {"units": unit, "long_name": "mean distance of the displacements in the "
                            "bin (weighted like the averages)"}),
             "sample": ("sample", np.arange(n), {"units": "1", "long_name": "sample index"}),
         },
-        attrs={"sigma": float(sigma), "supersample": int(supersample), "level_set_model": model,
-               "bin_width": float(bin_width), "bin_weighting": bin_weighting,
-               "r_max": float(r_max)},
+        attrs=attrs,
     )
 
 
@@ -451,16 +518,28 @@ SURFACE = {
     "euler_samples": VariableSpec(("sample",), "1/pixel^2"),
 }
 
+#: what a reader of a 3D surface-function file requires
+SURFACE_3D = {
+    "F_sv": VariableSpec(("r",), "1/voxel"),
+    "F_sv_sem": VariableSpec(("r",), "1/voxel"),
+    "F_sv_samples": VariableSpec(("sample", "r"), "1/voxel"),
+    "F_ss": VariableSpec(("r",), "1/voxel^2"),
+    "F_ss_sem": VariableSpec(("r",), "1/voxel^2"),
+    "F_ss_samples": VariableSpec(("sample", "r"), "1/voxel^2"),
+    "s_samples": VariableSpec(("sample",), "1/voxel"),
+    "euler_samples": VariableSpec(("sample",), "1/voxel^3"),
+}
+
 
 # --------------------------------------------------------------------------- tuning
 
 
 def mean_specific_surface(images, sigma: float, supersample: int, model: str = "pixels") -> float:
-    """Sample mean of the level sets' specific surface (void phase = image value 0).
+    """Sample mean of the level sets' specific surface (void phase = image value 0; 2D or 3D).
 
     Parameters
     ----------
-    images : array_like, shape (n_samples, ny, nx)
+    images : array_like, shape (n_samples, ny, nx) or (n_samples, nz, ny, nx)
         Periodic images, void = 0.
     sigma : float
         Gaussian width of the level sets (pixels).
@@ -472,7 +551,7 @@ def mean_specific_surface(images, sigma: float, supersample: int, model: str = "
     Returns
     -------
     float
-        Mean s (1/pixel).
+        Mean s (1/pixel; 1/voxel in 3D).
     """
     return float(np.mean([specific_surface_of(LevelSet.build(image, 0, sigma, supersample, model))
                           for image in images]))
@@ -493,9 +572,13 @@ def tune_sigma(images, s_target: float, *, supersample: int, model: str = "pixel
     left from the evaluations bisection would need, 3 + log2((hi - lo) / xtol); Brent's
     method rarely needs more).
 
+    In 3D (``images`` of shape (n_samples, nz, ny, nx)) the same with voxels: the target of
+    a 3D Debye medium is s = 4 phi1 phi2 / a, of overlapping spheres
+    :func:`randmedia.theory.overlapping.specific_surface` with ``dim=3``.
+
     Parameters
     ----------
-    images : array_like, shape (n_samples, ny, nx)
+    images : array_like, shape (n_samples, ny, nx) or (n_samples, nz, ny, nx)
         Periodic images, void = 0.
     s_target : float
         Target specific surface (1/pixel, > 0).
