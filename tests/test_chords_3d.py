@@ -234,3 +234,19 @@ def test_sample_chords_rejects_other_ranks():
         sample_chords(np.zeros(10, dtype=np.uint8), 0, np.random.default_rng(0))
     with pytest.raises(ValueError, match="n_samples"):
         lineal_path_and_chords(np.zeros((2, 2, 4, 4, 4)), 0, np.random.default_rng(0), z_max=2.0)
+
+
+def test_walk_on_a_level_set_grid_gives_the_same_slab_chords():
+    """model="pixels", supersample 2, sigma 0: the fine grid is the voxel union, its level set
+    the slab itself; the same draws give the same lines, so every run equals the default
+    walk's run within one step (positions and steps in sub-voxel units, runs back in voxels)."""
+    image = _slab(8, 24)
+    step = 0.1
+    kwargs = dict(n_directions=12, lines_per_direction=3, sigma=0.0, step=step)
+    runs, complete, length, n = sample_chords(image, 0, np.random.default_rng(5), **kwargs)
+    fine_runs, fine_complete, fine_length, fine_n = sample_chords(
+        image, 0, np.random.default_rng(5), model="pixels", supersample=2, **kwargs)
+    assert (fine_length, fine_n) == (length, n)
+    np.testing.assert_array_equal(fine_complete, complete)
+    np.testing.assert_allclose(fine_runs, runs, atol=step)
+    assert fine_runs[fine_complete].min() >= 8 - step

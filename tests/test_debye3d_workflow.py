@@ -71,6 +71,7 @@ def test_construction_rows_carry_delta_s2_against_the_goal():
 def test_quick_debye3d_target_runs_and_its_comparison_is_consistent(quick_run):
     """`snakemake debye3d` (not part of `all`) on the quick config, in the quick run's folder."""
     import pandas as pd
+    import xarray as xr
 
     from conftest import QUICK_RESULTS, assert_comparison_notes, run_snakemake
 
@@ -79,8 +80,15 @@ def test_quick_debye3d_target_runs_and_its_comparison_is_consistent(quick_run):
     out = quick_run / QUICK_RESULTS / "debye3d"
     table = pd.read_csv(out / "comparison.csv")
     assert_comparison_notes(table, pd.read_csv(out / "comparison_notes.csv"), k_sigma=3.0)
-    assert set(table["quantity"]) >= {"S2_void", "delta_S2"}
+    assert set(table["quantity"]) >= {"S2_void", "delta_S2", "F_sv (Eq. 44)", "F_ss (Eq. 45)",
+                                      "L (exponential, L'(0) = -s/4)", "F_sv (spheres, exact)",
+                                      "<delta> (spheres, exact)", "mean chord (4 phi1 / s, Eq. 20)"}
     assert table[table["quantity"] == "delta_S2"]["passed"].all()  # every construction converged
-    for name in ("media", "s2"):
+    # chords walk the surface functions' tuned level set (config chords.sigma: tuned)
+    surface = xr.load_dataset(out / "descriptors" / "yt_phi0.5_surface.nc")
+    chords = xr.load_dataset(out / "descriptors" / "yt_phi0.5_chords.nc")
+    assert chords.attrs["sigma"] == surface.attrs["sigma"] and chords.attrs["supersample"] == 2
+    assert abs(surface.attrs["s_tuned"] / surface.attrs["s_exact"] - 1) < 0.01
+    for name in ("media", "s2", "surface", "pores", "chords"):
         assert (out / "figures" / f"{name}.pdf").stat().st_size > 0
         assert (out / "figures" / f"{name}.png").stat().st_size > 0

@@ -115,10 +115,18 @@ rule debye3d_level_set:
         "../scripts/debye3d/level_set.py"
 
 
+def debye3d_chords_level_set(wildcards):
+    """The surface file whose tuned level set the lines walk ("tuned" sigma), else nothing."""
+    if config["debye3d"]["chords"]["sigma"] == "tuned":
+        return [DEBYE3D_SURFACE.format(system=wildcards.system)]
+    return []
+
+
 rule debye3d_chords:
     """L(z) and p(z) of the void of a periodic system, lines in many directions."""
     input:
         samples=debye3d_samples,
+        surface=debye3d_chords_level_set,
         code=script_sources("../scripts/debye3d/chords.py"),
     output:
         DEBYE3D_CHORDS,

@@ -423,7 +423,8 @@ class LevelSet:
 
 def sample_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *,
                   n_directions: int = 32, lines_per_direction: int = 8,
-                  line_length: float | None = None, step: float = 0.1, sigma: float = 0.5):
+                  line_length: float | None = None, step: float = 0.1, sigma: float = 0.5,
+                  model: str = "bilinear", supersample: int = 1):
     """Runs of ``phase`` along random lines: (lengths, complete flags, line length T, n lines).
 
     2D: ``n_directions`` angles pi (d + u)/n in [0, pi) with one uniform offset u per image
@@ -453,6 +454,15 @@ def sample_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *,
         Step along a line (pixels/voxels).
     sigma : float, optional
         Gaussian width of the level set (pixels/voxels; :func:`smoothed_level_set`).
+    model : {"bilinear", "pixels"}, optional
+        Level-set model (:class:`LevelSet`). The default walks the filtered field at the
+        pixel (voxel) centres; any other choice (or ``supersample`` > 1) walks the
+        ``fine`` grid of ``LevelSet.build(image, phase, sigma, supersample, model)`` --
+        e.g. the level set whose sigma was tuned to the exact specific surface for the
+        surface functions, so that chords and surface functions see one medium. The random
+        draws are the same either way.
+    supersample : int, optional
+        Sub-pixels per pixel of that level set.
 
     Returns
     -------
@@ -468,7 +478,12 @@ def sample_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *,
     image = np.ascontiguousarray(image)
     if image.ndim not in (2, 3):
         raise ValueError(f"expected a 2D or 3D image, got shape {image.shape}")
-    field, threshold = smoothed_level_set(image, phase, sigma)
+    if model == "bilinear" and supersample == 1:
+        field, threshold = smoothed_level_set(image, phase, sigma)
+        scale = 1
+    else:  # walk the sub-pixel grid: positions and steps in its units, runs back in pixels
+        level_set = LevelSet.build(image, phase, sigma, supersample, model)
+        field, threshold, scale = level_set.fine, level_set.threshold, supersample
     if n_directions < 1 or lines_per_direction < 1 or step <= 0:
         raise ValueError("n_directions, lines_per_direction must be >= 1 and step > 0")
     length = float(line_length if line_length is not None else 4 * max(image.shape))
@@ -484,18 +499,18 @@ def sample_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *,
             theta = math.pi * (d + offset) / n_directions
             for _ in range(lines_per_direction):
                 x0, y0 = rng.random() * nx, rng.random() * ny
-                count = _walk(field, threshold, x0, y0, math.cos(theta), math.sin(theta), n_steps,
-                              step, runs, complete)
-                lengths.append(runs[:count].copy())
+                count = _walk(field, threshold, x0 * scale, y0 * scale, math.cos(theta),
+                              math.sin(theta), n_steps, step * scale, runs, complete)
+                lengths.append(runs[:count] / scale if scale != 1 else runs[:count].copy())
                 flags.append(complete[:count].copy())
     else:
         nz, ny, nx = image.shape
         for dx, dy, dz in sphere_line_directions(n_directions, rng):
             for _ in range(lines_per_direction):
                 x0, y0, z0 = rng.random() * nx, rng.random() * ny, rng.random() * nz
-                count = _walk3(field, threshold, x0, y0, z0, float(dx), float(dy), float(dz),
-                               n_steps, step, runs, complete)
-                lengths.append(runs[:count].copy())
+                count = _walk3(field, threshold, x0 * scale, y0 * scale, z0 * scale, float(dx),
+                               float(dy), float(dz), n_steps, step * scale, runs, complete)
+                lengths.append(runs[:count] / scale if scale != 1 else runs[:count].copy())
                 flags.append(complete[:count].copy())
     n_lines = n_directions * lines_per_direction
     return np.concatenate(lengths), np.concatenate(flags), length, n_lines

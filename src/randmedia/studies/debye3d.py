@@ -227,9 +227,11 @@ def level_set_datasets(images: np.ndarray, params: Mapping, interface: Mapping,
 
 
 def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
-                   rng: np.random.Generator) -> xr.Dataset:
+                   rng: np.random.Generator, level_set: Mapping | None = None) -> xr.Dataset:
     """L(z) and p(z) of the void of one system's periodic 3D images along lines in many
-    directions (:func:`randmedia.describe.chords.lineal_path_and_chords`).
+    directions (:func:`randmedia.describe.chords.lineal_path_and_chords`), on the level set
+    of the surface functions when ``chords["sigma"]`` is "tuned" (``level_set``: its
+    ``sigma``, ``supersample``, ``level_set_model`` -- the surface file's attributes).
 
     Parameters
     ----------
@@ -238,9 +240,12 @@ def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
     params : Mapping
         The system's parameters (:func:`systems`).
     chords : Mapping
-        The config section ``debye3d.chords`` (z_max_over_length and the sampling keywords).
+        The config section ``debye3d.chords`` (z_max_over_length, sigma and the sampling
+        keywords).
     rng : numpy.random.Generator
         Source of the directions and origins.
+    level_set : Mapping, optional
+        Required when ``chords["sigma"]`` is "tuned".
 
     Returns
     -------
@@ -252,7 +257,14 @@ def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
     sampling = dict(chords)
     length = system_length(params)
     z_max = sampling.pop("z_max_over_length") * length
+    if sampling["sigma"] == "tuned":
+        if level_set is None:
+            raise ValueError("chords sigma 'tuned' needs the surface functions' level set")
+        sampling.update(sigma=float(level_set["sigma"]), supersample=int(level_set["supersample"]),
+                        model=str(level_set["level_set_model"]))
     out = lineal_path_and_chords(images, 0, rng, z_max=z_max, **sampling)
     out.attrs.update({"kind": params["kind"], "phi2": float(params["phi2"]), "length_scale": length,
-                      "s_exact": exact_specific_surface(params)})
+                      "s_exact": exact_specific_surface(params), "sigma": float(sampling["sigma"]),
+                      "level_set_model": str(sampling.get("model", "bilinear")),
+                      "supersample": int(sampling.get("supersample", 1))})
     return out

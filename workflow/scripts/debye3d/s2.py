@@ -6,7 +6,7 @@ from randmedia.jobs import start_job
 
 log = start_job(snakemake)
 
-from randmedia.io import read_dataset, write_dataset
+from randmedia.io import write_dataset
 from randmedia.studies.debye3d import read_voxel_images, s2_dataset
 
 params = dict(snakemake.params.system)
