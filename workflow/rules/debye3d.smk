@@ -17,22 +17,16 @@ DEBYE3D_SAMPLE = results_path("debye3d/{system}/sample{k}.nc")
 DEBYE3D_S2 = results_path("debye3d/descriptors/{system}_S2.nc")
 
 
-def debye3d_samples(wildcards):
-    """The sample files of the wildcard's system."""
-    n = DEBYE3D_SYSTEMS[wildcards.system]["n_samples"]
-    return expand(DEBYE3D_SAMPLE, system=wildcards.system, k=range(n))
-
-
-def debye3d_params(wildcards):
-    """The wildcard's system parameters (randmedia.studies.debye3d.systems)."""
-    return DEBYE3D_SYSTEMS[wildcards.system]
-
-
-def debye3d_generator_params(wildcards):
-    """What makes one sample: the system's parameters without the sample count and the
-    descriptor ranges (more samples or other ranges leave the existing samples alone)."""
-    return {key: value for key, value in DEBYE3D_SYSTEMS[wildcards.system].items()
-            if key not in ("n_samples", "s2_r_max")}
+#: per system: its sample files, and what makes one sample -- the system's parameters without
+#: the sample count and the descriptor ranges (more samples or other ranges leave the existing
+#: samples alone)
+DEBYE3D_SAMPLES = {name: expand(DEBYE3D_SAMPLE, system=name, k=range(p["n_samples"]))
+                   for name, p in DEBYE3D_SYSTEMS.items()}
+DEBYE3D_GENERATOR_PARAMS = {name: {key: value for key, value in p.items()
+                                   if key not in ("n_samples", "s2_r_max")}
+                            for name, p in DEBYE3D_SYSTEMS.items()}
+#: chords walk the surface functions' level set when config debye3d.chords.sigma is "tuned"
+DEBYE3D_CHORDS_TUNED = config["debye3d"]["chords"]["sigma"] == "tuned"
 
 
 #: the {system} wildcard of these rules: one of the table's systems (a per-rule constraint:
@@ -49,7 +43,7 @@ rule debye3d_sample:
     wildcard_constraints:
         system=DEBYE3D_SYSTEM,
     params:
-        system=debye3d_generator_params,
+        system=lambda wildcards: DEBYE3D_GENERATOR_PARAMS[wildcards.system],
         seed=config["seed"],
     benchmark:
         results_path("debye3d/benchmarks/sample_{system}_sample{k}.tsv")
@@ -65,14 +59,14 @@ rule debye3d_sample:
 rule debye3d_s2:
     """S2 of the void of a system's samples against the exact S2; Delta S2 of the constructions."""
     input:
-        samples=debye3d_samples,
+        samples=lambda wildcards: DEBYE3D_SAMPLES[wildcards.system],
         code=script_sources("../scripts/debye3d/s2.py"),
     output:
         DEBYE3D_S2,
     wildcard_constraints:
         system=DEBYE3D_SYSTEM,
     params:
-        system=debye3d_params,
+        system=lambda wildcards: DEBYE3D_SYSTEMS[wildcards.system],
     benchmark:
         results_path("debye3d/benchmarks/s2_{system}.tsv")
     log:
@@ -93,7 +87,7 @@ DEBYE3D_LEVEL_SET_SYSTEM = "|".join(re.escape(name) for name in DEBYE3D_LEVEL_SE
 rule debye3d_level_set:
     """F_sv, F_ss, s, wrapping and pore sizes of a periodic system on level sets tuned to the exact s."""
     input:
-        samples=debye3d_samples,
+        samples=lambda wildcards: DEBYE3D_SAMPLES[wildcards.system],
         code=script_sources("../scripts/debye3d/level_set.py"),
     output:
         surface=DEBYE3D_SURFACE,
@@ -101,7 +95,7 @@ rule debye3d_level_set:
     wildcard_constraints:
         system=DEBYE3D_LEVEL_SET_SYSTEM,
     params:
-        system=debye3d_params,
+        system=lambda wildcards: DEBYE3D_SYSTEMS[wildcards.system],
         interface=config["debye3d"]["interface"],
         seed=config["seed"],
     benchmark:
@@ -115,25 +109,18 @@ rule debye3d_level_set:
         "../scripts/debye3d/level_set.py"
 
 
-def debye3d_chords_level_set(wildcards):
-    """The surface file whose tuned level set the lines walk ("tuned" sigma), else nothing."""
-    if config["debye3d"]["chords"]["sigma"] == "tuned":
-        return [DEBYE3D_SURFACE.format(system=wildcards.system)]
-    return []
-
-
 rule debye3d_chords:
     """L(z) and p(z) of the void of a periodic system, lines in many directions."""
     input:
-        samples=debye3d_samples,
-        surface=debye3d_chords_level_set,
+        samples=lambda wildcards: DEBYE3D_SAMPLES[wildcards.system],
+        surface=lambda wildcards: [DEBYE3D_SURFACE.format(system=wildcards.system)] if DEBYE3D_CHORDS_TUNED else [],
         code=script_sources("../scripts/debye3d/chords.py"),
     output:
         DEBYE3D_CHORDS,
     wildcard_constraints:
         system=DEBYE3D_LEVEL_SET_SYSTEM,
     params:
-        system=debye3d_params,
+        system=lambda wildcards: DEBYE3D_SYSTEMS[wildcards.system],
         chords=config["debye3d"]["chords"],
         seed=config["seed"],
     benchmark:
@@ -151,10 +138,11 @@ DEBYE3D_FIGURE = results_path("debye3d/figures/{name}.pdf")
 DEBYE3D_DEBYE_SYSTEMS = [name for name, p in DEBYE3D_SYSTEMS.items() if p["kind"] != "spheres"]
 
 
-def debye3d_figure_outputs(name):
-    """{name}.pdf and the PNG beside it."""
-    pdf = DEBYE3D_FIGURE.format(name=name)
-    return {"pdf": pdf, "png": pdf[: -len(".pdf")] + ".png"}
+DEBYE3D_FIGURES = ("media", "s2", "surface", "pores", "chords")
+#: each figure's PDF and the PNG beside it
+DEBYE3D_FIGURE_OUTPUTS = {name: {"pdf": DEBYE3D_FIGURE.format(name=name),
+                                 "png": DEBYE3D_FIGURE.format(name=name)[: -len(".pdf")] + ".png"}
+                          for name in DEBYE3D_FIGURES}
 
 
 rule debye3d_figure_media:
@@ -163,7 +151,7 @@ rule debye3d_figure_media:
         samples=expand(DEBYE3D_SAMPLE, system=DEBYE3D_DEBYE_SYSTEMS, k=0),
         code=script_sources("../scripts/debye3d/figure.py"),
     output:
-        **debye3d_figure_outputs("media"),
+        **DEBYE3D_FIGURE_OUTPUTS["media"],
     params:
         figure="media",
         settings={"a": config["debye3d"]["media"]["a"]},
@@ -179,16 +167,13 @@ rule debye3d_figure_s2:
         s2=expand(DEBYE3D_S2, system=DEBYE3D_SYSTEMS),
         code=script_sources("../scripts/debye3d/figure.py"),
     output:
-        **debye3d_figure_outputs("s2"),
+        **DEBYE3D_FIGURE_OUTPUTS["s2"],
     params:
         figure="s2",
     log:
         results_path("debye3d/logs/figure_s2.log"),
     script:
         "../scripts/debye3d/figure.py"
-
-
-DEBYE3D_FIGURES = ("media", "s2", "surface", "pores", "chords")
 
 
 for _name, _files in (("surface", DEBYE3D_SURFACE), ("pores", DEBYE3D_PORES), ("chords", DEBYE3D_CHORDS)):
@@ -200,7 +185,7 @@ for _name, _files in (("surface", DEBYE3D_SURFACE), ("pores", DEBYE3D_PORES), ("
             descriptors=expand(_files, system=DEBYE3D_LEVEL_SET_SYSTEMS),
             code=script_sources("../scripts/debye3d/figure.py"),
         output:
-            **debye3d_figure_outputs(_name),
+            **DEBYE3D_FIGURE_OUTPUTS[_name],
         params:
             figure=_name,
         log:
@@ -230,7 +215,7 @@ rule debye3d_comparison:
 
 DEBYE3D_TARGETS = [
     *expand(DEBYE3D_S2, system=DEBYE3D_SYSTEMS),
-    *[path for name in DEBYE3D_FIGURES for path in debye3d_figure_outputs(name).values()],
+    *[path for name in DEBYE3D_FIGURES for path in DEBYE3D_FIGURE_OUTPUTS[name].values()],
     *rules.debye3d_comparison.output,
 ]
 
