@@ -140,9 +140,11 @@ DEBYE3D_DEBYE_SYSTEMS = [name for name, p in DEBYE3D_SYSTEMS.items() if p["kind"
 
 DEBYE3D_FIGURES = ("media", "s2", "surface", "pores", "chords")
 #: each figure's PDF and the PNG beside it
-DEBYE3D_FIGURE_OUTPUTS = {name: {"pdf": DEBYE3D_FIGURE.format(name=name),
-                                 "png": DEBYE3D_FIGURE.format(name=name)[: -len(".pdf")] + ".png"}
-                          for name in DEBYE3D_FIGURES}
+DEBYE3D_FIGURE_OUTPUTS = {
+    name: {"pdf": DEBYE3D_FIGURE.format(name=name),
+           "png": report_validation_figure(DEBYE3D_FIGURE.format(name=name)[: -len(".pdf")] + ".png",
+                                           "debye3d", f"{name}.rst")}
+    for name in DEBYE3D_FIGURES}
 
 
 rule debye3d_figure_media:
@@ -155,6 +157,8 @@ rule debye3d_figure_media:
     params:
         figure="media",
         settings={"a": config["debye3d"]["media"]["a"]},
+    benchmark:
+        results_path("debye3d/benchmarks/figure_media.tsv")
     log:
         results_path("debye3d/logs/figure_media.log"),
     script:
@@ -170,6 +174,8 @@ rule debye3d_figure_s2:
         **DEBYE3D_FIGURE_OUTPUTS["s2"],
     params:
         figure="s2",
+    benchmark:
+        results_path("debye3d/benchmarks/figure_s2.tsv")
     log:
         results_path("debye3d/logs/figure_s2.log"),
     script:
@@ -188,6 +194,8 @@ for _name, _files in (("surface", DEBYE3D_SURFACE), ("pores", DEBYE3D_PORES), ("
             **DEBYE3D_FIGURE_OUTPUTS[_name],
         params:
             figure=_name,
+        benchmark:
+            results_path(f"debye3d/benchmarks/figure_{_name}.tsv")
         log:
             results_path(f"debye3d/logs/figure_{_name}.log"),
         script:
@@ -207,6 +215,8 @@ rule debye3d_comparison:
         notes=results_path("debye3d/comparison_notes.csv"),
     params:
         k_sigma=config["comparison"]["k_sigma"],
+    benchmark:
+        results_path("debye3d/benchmarks/comparison.tsv")
     log:
         results_path("debye3d/logs/comparison.log"),
     script:
@@ -215,7 +225,7 @@ rule debye3d_comparison:
 
 DEBYE3D_TARGETS = [
     *expand(DEBYE3D_S2, system=DEBYE3D_SYSTEMS),
-    *[path for name in DEBYE3D_FIGURES for path in DEBYE3D_FIGURE_OUTPUTS[name].values()],
+    *[str(path) for name in DEBYE3D_FIGURES for path in DEBYE3D_FIGURE_OUTPUTS[name].values()],
     *rules.debye3d_comparison.output,
 ]
 
