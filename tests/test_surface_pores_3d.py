@@ -294,3 +294,20 @@ def test_pore_sizes_and_surface_functions_of_digitized_spheres(spheres_exact_geo
     width = float(pores.attrs["delta_bin_width"])
     np.testing.assert_allclose(pores["P_samples"].values.sum(axis=1) * width,
                                1 - pores["F_samples"].values[:, -1], atol=1e-12)
+
+
+def test_point_triangle_distance_of_degenerate_triangles():
+    """Marching tetrahedra emits zero-area triangles where the field equals the threshold at a
+    node (repeated vertices): the distance is then the one to the segment or the point, never a
+    division by zero (a 96^3 overlapping-sphere run hit one)."""
+    from randmedia.describe.pore_size import _point_triangle_distance
+
+    point = (0.3, 2.0, -0.5)
+    a, b = np.array([0.0, 0.0, 0.0]), np.array([1.0, 0.0, 0.0])
+    segment = np.stack([a, a, b])  # edge ab of zero length, then ac = ab
+    expected_segment = np.hypot(2.0, 0.5)  # closest point (0.3, 0, 0)
+    for tri in (segment, np.stack([a, b, b]), np.stack([b, a, a])):
+        assert _point_triangle_distance(*point, tri) == pytest.approx(expected_segment)
+    assert _point_triangle_distance(*point, np.stack([a, a, a])) == pytest.approx(np.linalg.norm(point))
+    collinear = np.stack([a, 0.5 * b, b])
+    assert _point_triangle_distance(*point, collinear) == pytest.approx(expected_segment)

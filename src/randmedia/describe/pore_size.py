@@ -71,13 +71,36 @@ def _point_segment_distance(px, py, ax, ay, bx, by):
 
 
 @njit(cache=True)
+def _point_segment_distance3(px, py, pz, a, b):
+    """Distance from the point p to the segment [a, b] (3D; a point if a == b)."""
+    dx, dy, dz = b[0] - a[0], b[1] - a[1], b[2] - a[2]
+    ex, ey, ez = px - a[0], py - a[1], pz - a[2]
+    length2 = dx * dx + dy * dy + dz * dz
+    t = 0.0
+    if length2 > 0.0:
+        t = min(1.0, max(0.0, (ex * dx + ey * dy + ez * dz) / length2))
+    qx, qy, qz = ex - t * dx, ey - t * dy, ez - t * dz
+    return math.sqrt(qx * qx + qy * qy + qz * qz)
+
+
+@njit(cache=True)
 def _point_triangle_distance(px, py, pz, tri):
     """Exact distance from the point p to the triangle ``tri`` (3, 3) (closest point by the
     Voronoi regions of the vertices, edges and face; Ericson, Real-Time Collision Detection,
-    Sec. 5.1.5)."""
+    Sec. 5.1.5). A degenerate triangle (zero area: marching tetrahedra emits them where the
+    field equals the threshold at a grid node, with repeated vertices) is its three edges,
+    whose closest point the Voronoi tests would divide by zero to find: the minimum of the
+    point-segment distances."""
     ax, ay, az = tri[0, 0], tri[0, 1], tri[0, 2]
     abx, aby, abz = tri[1, 0] - ax, tri[1, 1] - ay, tri[1, 2] - az
     acx, acy, acz = tri[2, 0] - ax, tri[2, 1] - ay, tri[2, 2] - az
+    nx = aby * acz - abz * acy
+    ny = abz * acx - abx * acz
+    nz = abx * acy - aby * acx
+    if nx * nx + ny * ny + nz * nz == 0.0:
+        return min(_point_segment_distance3(px, py, pz, tri[0], tri[1]),
+                   _point_segment_distance3(px, py, pz, tri[0], tri[2]),
+                   _point_segment_distance3(px, py, pz, tri[1], tri[2]))
     apx, apy, apz = px - ax, py - ay, pz - az
     d1 = abx * apx + aby * apy + abz * apz
     d2 = acx * apx + acy * apy + acz * apz
