@@ -150,9 +150,10 @@ def test_window_agrees_with_periodic_and_exact_on_spheres(spheres, name):
 
 def test_seam_of_the_periodic_estimator_on_poisson_planes():
     """On a Poisson-plane window the periodic level set has a sheet of interface in the cubes
-    that wrap (about 0.87 x the voxel faces whose two sides across the seam differ; the
-    level set cuts the staircase's corners), which the window estimator excludes: its
-    interior M is the periodic level set's M on the same box (only the threshold differs)."""
+    that wrap: 0.87 (2 sub-voxels) or 0.77 (4 sub-voxels, 48^3) times the area of the voxel
+    faces whose two sides across the seam differ (the level set cuts the staircase's
+    corners). The window estimator excludes it: its interior M is the periodic level set's
+    M on the same box (only the threshold differs)."""
     rng = np.random.default_rng(13)
     side, a, sigma, m = 28, 3.0, 0.45, 2
     for _ in range(2):
@@ -162,7 +163,7 @@ def test_seam_of_the_periodic_estimator_on_poisson_planes():
         seam = (triangles > side - 0.5 / m).any(axis=(1, 2))
         faces = sum(np.count_nonzero(np.take(image, 0, axis=k) != np.take(image, -1, axis=k))
                     for k in range(3))
-        assert 0.75 * faces < triangle_areas(triangles[seam]).sum() < 1.0 * faces
+        assert 0.65 * faces < triangle_areas(triangles[seam]).sum() < 1.0 * faces
         density, _, margin = interior_fields(image, sigma, m)
         full = surface_density(triangles, periodic.fine.shape, periodic.spacing)
         assert density.mean() == pytest.approx(_interior(full, margin).mean(), rel=5e-3)
