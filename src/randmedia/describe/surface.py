@@ -558,7 +558,8 @@ def mean_specific_surface(images, sigma: float, supersample: int, model: str = "
 
 
 def tune_sigma(images, s_target: float, *, supersample: int, model: str = "pixels",
-               bracket=(0.1, 3.0), xtol: float = 2e-3, log=None) -> tuple[float, float]:
+               bracket=(0.1, 3.0), xtol: float = 2e-3, log=None,
+               specific_surface=None) -> tuple[float, float]:
     """The Gaussian width sigma (pixels) at which the level sets of ``images`` have, on
     average, the specific surface ``s_target`` (Ma & Torquato 2020, Sec. V A: "we tune the
     Gaussian filters such that the specific surface s is consistent with the theoretical
@@ -592,6 +593,12 @@ def tune_sigma(images, s_target: float, *, supersample: int, model: str = "pixel
         Tolerance on sigma (pixels), passed to brentq.
     log : logging.Logger, optional
         Progress log.
+    specific_surface : callable, optional
+        ``specific_surface(images, sigma) -> float``, the mean specific surface of the stack
+        at width sigma that is matched to ``s_target``; None (default):
+        :func:`mean_specific_surface` with ``supersample`` and ``model`` (periodic images).
+        The window estimator plugs in its interior s here
+        (:func:`randmedia.describe.window_surface.tune_sigma_window`).
 
     Returns
     -------
@@ -606,10 +613,13 @@ def tune_sigma(images, s_target: float, *, supersample: int, model: str = "pixel
     lo, hi = bracket
     most = 3 + math.ceil(math.log2((hi - lo) / xtol))
     started, evaluations = time.perf_counter(), 0
+    if specific_surface is None:
+        def specific_surface(stack, sigma):
+            return mean_specific_surface(stack, sigma, supersample, model)
 
     def excess(sigma):
         nonlocal evaluations
-        value = mean_specific_surface(images, sigma, supersample, model) - s_target
+        value = specific_surface(images, sigma) - s_target
         evaluations += 1
         if log is not None:
             per = (time.perf_counter() - started) / evaluations
