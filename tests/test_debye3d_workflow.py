@@ -19,10 +19,10 @@ def section():
 def test_system_table_of_the_quick_config(section):
     table = systems(section)
     assert sorted(table) == ["planes_phi0.3", "planes_phi0.5", "spheres_phi0.3", "yt_phi0.3", "yt_phi0.5"]
-    assert table["yt_phi0.5"]["kind"] == "yt" and table["yt_phi0.5"]["lc"] == 8.0
+    assert table["yt_phi0.5"]["kind"] == "yt" and table["yt_phi0.5"]["lc"] == 12.0
     assert table["planes_phi0.3"]["n_samples"] == 2 and "lc" not in table["planes_phi0.3"]
-    assert table["spheres_phi0.3"]["s2_r_max"] == pytest.approx(6.0 * 3.0)  # r_max_over_length R
-    assert table["yt_phi0.3"]["s2_r_max"] == pytest.approx(6.0 * 2.0)  # ... a
+    assert table["spheres_phi0.3"]["s2_r_max"] == pytest.approx(4.0 * 3.0)  # r_max_over_length R
+    assert table["yt_phi0.3"]["s2_r_max"] == pytest.approx(4.0 * 3.0)  # ... a
     no_planes = {**section, "poisson_planes": {"n_samples": 0}}
     assert not any(name.startswith("planes") for name in systems(no_planes))
 

@@ -109,6 +109,32 @@ rule debye3d_level_set:
         "../scripts/debye3d/level_set.py"
 
 
+DEBYE3D_WINDOW_SYSTEMS = [name for name, p in DEBYE3D_SYSTEMS.items() if p["kind"] == "planes"]
+
+
+rule debye3d_window_surface:
+    """F_sv, F_ss and s of a Poisson-plane system's windows by minus-sampling (tuned to the exact s)."""
+    input:
+        samples=lambda wildcards: DEBYE3D_SAMPLES[wildcards.system],
+        code=script_sources("../scripts/debye3d/window_surface.py"),
+    output:
+        DEBYE3D_SURFACE,
+    wildcard_constraints:
+        system="|".join(re.escape(name) for name in DEBYE3D_WINDOW_SYSTEMS) or "no-window-system",
+    params:
+        system=lambda wildcards: DEBYE3D_SYSTEMS[wildcards.system],
+        interface=config["debye3d"]["interface"],
+    benchmark:
+        results_path("debye3d/benchmarks/window_surface_{system}.tsv")
+    log:
+        results_path("debye3d/logs/window_surface_{system}.log"),
+    threads: 1
+    resources:
+        mem_mb=6000,
+    script:
+        "../scripts/debye3d/window_surface.py"
+
+
 rule debye3d_chords:
     """L(z) and p(z) of the void of a periodic system, lines in many directions."""
     input:
@@ -182,13 +208,17 @@ rule debye3d_figure_s2:
         "../scripts/debye3d/figure.py"
 
 
-for _name, _files in (("surface", DEBYE3D_SURFACE), ("pores", DEBYE3D_PORES), ("chords", DEBYE3D_CHORDS)):
+for _name, _files, _systems in (
+    ("surface", DEBYE3D_SURFACE, DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
+    ("pores", DEBYE3D_PORES, DEBYE3D_LEVEL_SET_SYSTEMS),
+    ("chords", DEBYE3D_CHORDS, DEBYE3D_LEVEL_SET_SYSTEMS),
+):
 
     rule:
         name:
             f"debye3d_figure_{_name}"
         input:
-            descriptors=expand(_files, system=DEBYE3D_LEVEL_SET_SYSTEMS),
+            descriptors=expand(_files, system=_systems),
             code=script_sources("../scripts/debye3d/figure.py"),
         output:
             **DEBYE3D_FIGURE_OUTPUTS[_name],
@@ -206,7 +236,7 @@ rule debye3d_comparison:
     """Every system against exact values, the issue's goals and the 3D conjectures."""
     input:
         s2=expand(DEBYE3D_S2, system=DEBYE3D_SYSTEMS),
-        surface=expand(DEBYE3D_SURFACE, system=DEBYE3D_LEVEL_SET_SYSTEMS),
+        surface=expand(DEBYE3D_SURFACE, system=DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
         pores=expand(DEBYE3D_PORES, system=DEBYE3D_LEVEL_SET_SYSTEMS),
         chords=expand(DEBYE3D_CHORDS, system=DEBYE3D_LEVEL_SET_SYSTEMS),
         code=script_sources("../scripts/debye3d/comparison.py"),

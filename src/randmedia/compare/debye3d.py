@@ -13,7 +13,8 @@ Rows (columns of :mod:`randmedia.compare`):
   2 x 10^-4 of issue 13 (upper bound).
 * the conjectures on the constructions (:func:`construction_rows`): Eqs. (44)-(45) and the
   exponential L(z), p(z) of Sec. VII, with the estimator error validated on overlapping
-  spheres as systematic margin;
+  spheres as systematic margin; Eqs. (44)-(45) also on the Poisson-plane windows (same S2,
+  :func:`surface_conjecture_rows`), the contrast of two media with one S2;
 * the validation of every 3D estimator on overlapping spheres (:func:`sphere_rows`).
 """
 
@@ -132,10 +133,54 @@ def sphere_validation(surface: xr.Dataset, chords: xr.Dataset, k_sigma: float) -
     return out
 
 
+def surface_conjecture_rows(system: str, surface: xr.Dataset, k_sigma: float,
+                            validation: Mapping | None = None) -> list[dict]:
+    """F_sv against Eq. (44) and F_ss against Eq. (45) at :data:`SURFACE_RADII` x a (bins from
+    two sub-voxels on), for any medium with the Debye S2 (constructions, Poisson planes).
+    Tolerance k_sigma SEM plus the estimator error validated on overlapping spheres at the
+    same distance in voxels (``validation``, :func:`sphere_validation`).
+
+    Parameters
+    ----------
+    system : str
+        System name.
+    surface : xarray.Dataset
+        The system's surface file (periodic or window estimator).
+    k_sigma : float
+        Multiple of the SEM in the tolerance.
+    validation : Mapping, optional
+        :func:`sphere_validation` of the same estimators.
+
+    Returns
+    -------
+    list of dict
+        Comparison rows.
+    """
+    from randmedia.theory.debye_formulas import debye_surface_surface, debye_surface_void
+
+    a, phi2 = float(surface.attrs["length_scale"]), float(surface.attrs["phi2"])
+    rows = []
+    r = surface["r"].values
+    resolved = 2.0 / float(surface.attrs["supersample"])  # the deposit smears ~1 sub-voxel
+    for name, formula, equation in (("F_sv", debye_surface_void, "Eq. 44"),
+                                    ("F_ss", debye_surface_surface, "Eq. 45")):
+        for multiple in SURFACE_RADII:
+            b = _nearest(r, multiple * a)
+            if r[b] < resolved:
+                continue
+            published = float(formula(r[b], phi2, a, dim=3))
+            rows.append(compare(
+                f"{name} ({equation})", f"{system} r={r[b]:.3f} voxel (r/a={r[b] / a:.3f})", published,
+                float(surface[name][b]), float(surface[f"{name}_sem"][b]), k_sigma=k_sigma,
+                systematic=_margin(validation, name, r[b]) * abs(published),
+                reason_if_failed=REASON_CONJECTURE))
+    return rows
+
+
 def construction_rows(system: str, surface: xr.Dataset, chords: xr.Dataset, k_sigma: float,
                       validation: Mapping | None = None) -> list[dict]:
-    """The conjectures on one construction's descriptors: F_sv against Eq. (44) and F_ss against
-    Eq. (45) at :data:`SURFACE_RADII` x a; L(z) against phi1 e^(-phi2 z / a) and p(z) against
+    """The conjectures on one construction's descriptors: F_sv, F_ss against Eqs. (44)-(45)
+    (:func:`surface_conjecture_rows`); L(z) against phi1 e^(-phi2 z / a) and p(z) against
     (phi2 / a) e^(-phi2 z / a) (the exponential forms of overlapping spheres with the exact
     L'(0) = -s/4, s = 4 phi1 phi2 / a) at :data:`CHORD_LENGTHS` x a; the mean chord against
     4 phi1 / s (Eq. 20 in 3D, exact for any medium: a check of the estimator). Tolerance
@@ -158,25 +203,9 @@ def construction_rows(system: str, surface: xr.Dataset, chords: xr.Dataset, k_si
     list of dict
         Comparison rows.
     """
-    from randmedia.theory.debye_formulas import debye_surface_surface, debye_surface_void
-
     a, phi2 = float(surface.attrs["length_scale"]), float(surface.attrs["phi2"])
     phi1 = 1.0 - phi2
-    rows = []
-    r = surface["r"].values
-    resolved = 2.0 / float(surface.attrs["supersample"])  # the deposit smears ~1 sub-voxel
-    for name, formula, equation in (("F_sv", debye_surface_void, "Eq. 44"),
-                                    ("F_ss", debye_surface_surface, "Eq. 45")):
-        for multiple in SURFACE_RADII:
-            b = _nearest(r, multiple * a)
-            if r[b] < resolved:
-                continue
-            published = float(formula(r[b], phi2, a, dim=3))
-            rows.append(compare(
-                f"{name} ({equation})", f"{system} r={r[b]:.3f} voxel (r/a={r[b] / a:.3f})", published,
-                float(surface[name][b]), float(surface[f"{name}_sem"][b]), k_sigma=k_sigma,
-                systematic=_margin(validation, name, r[b]) * abs(published),
-                reason_if_failed=REASON_CONJECTURE))
+    rows = surface_conjecture_rows(system, surface, k_sigma, validation)
     z, zc = chords["z"].values, chords["z_chord"].values
     width = float(chords.attrs["chord_bin"])
     for multiple in CHORD_LENGTHS:

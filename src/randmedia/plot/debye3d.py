@@ -114,13 +114,16 @@ def s2(inputs, settings, log):
     return fig
 
 
-def _by_kind(paths):
-    """Descriptor datasets of the level-set systems: (constructions sorted by phi2, spheres)."""
-    yt, spheres = [], []
+def _by_kind(paths, kind="yt"):
+    """Descriptor datasets: (those of ``kind`` sorted by phi2, the spheres')."""
+    debye, spheres = [], []
     for path in paths:
         ds = xr.load_dataset(path)
-        (spheres if ds.attrs["kind"] == "spheres" else yt).append(ds)
-    return sorted(yt, key=lambda ds: float(ds.attrs["phi2"])), spheres
+        if ds.attrs["kind"] == "spheres":
+            spheres.append(ds)
+        elif ds.attrs["kind"] == kind:
+            debye.append(ds)
+    return sorted(debye, key=lambda ds: float(ds.attrs["phi2"])), spheres
 
 
 def surface(inputs, settings, log):
@@ -144,6 +147,7 @@ def surface(inputs, settings, log):
     from randmedia.theory.debye_formulas import debye_surface_surface, debye_surface_void
 
     yt, spheres = _by_kind(inputs["descriptors"])
+    planes = {float(ds.attrs["phi2"]): ds for ds in _by_kind(inputs["descriptors"], "planes")[0]}
     fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=0.9)
     for ds in yt:
         a, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
@@ -157,6 +161,14 @@ def surface(inputs, settings, log):
         axes[1].errorbar(r[keep] / a, a * a * ds["F_ss"].values[keep], yerr=a * a * ds["F_ss_sem"].values[keep],
                          fmt="o", ms=1.5, lw=0.5, color=colour)
         axes[1].plot(fine / a, a * a * debye_surface_surface(fine, phi2, a, dim=3), "--", lw=0.8, color=colour)
+        if phi2 in planes:  # same S2, another medium: open markers
+            other = planes[phi2]
+            rp = other["r"].values
+            kept = rp > 0
+            axes[0].plot(rp[kept] / a, a * other["F_sv"].values[kept], "o", ms=2, mfc="none", mew=0.4,
+                         color=colour)
+            axes[1].plot(rp[kept] / a, a * a * other["F_ss"].values[kept], "o", ms=2, mfc="none", mew=0.4,
+                         color=colour)
     for ds in spheres:
         radius, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
         s_exact = float(ds.attrs["s_exact"])
@@ -171,7 +183,7 @@ def surface(inputs, settings, log):
         axes[2].plot(fine / radius, overlapping.surface_surface(fine, radius, phi2, dim=3) / s_exact**2,
                      "k-", lw=0.7)
         axes[2].set_ylim(0, 3)
-    axes[0].set_ylabel(r"$a F_{sv}(r)$ (dashed: Eq. 44)")
+    axes[0].set_ylabel(r"$a F_{sv}(r)$ (dashed: Eq. 44; open: Poisson planes)")
     axes[1].set_ylabel(r"$a^2 F_{ss}(r)$ (dashed: Eq. 45)")
     axes[1].set_yscale("log")
     axes[2].set_ylabel("overlapping spheres (lines: exact)")

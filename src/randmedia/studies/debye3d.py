@@ -159,10 +159,10 @@ def systems(section: Mapping) -> dict[str, dict]:
     return out
 
 
-#: kinds whose level-set descriptors (surface functions, pores, chords) are computed: the
-#: periodic ones. The Poisson-plane windows are not periodic and these estimators wrap around
-#: the image (their seam would add interface that is not there); they get S2 only, by the
-#: window estimator.
+#: kinds whose periodic level-set descriptors (surface functions, pores, chords) are computed.
+#: The Poisson-plane windows are not periodic and these estimators wrap around the image (the
+#: seam adds ~6 phi1 phi2 / L of interface per volume); they get S2 and the surface functions
+#: by the window (minus-sampling) estimators (:func:`window_surface_dataset`).
 LEVEL_SET_KINDS = ("yt", "spheres")
 
 
@@ -268,3 +268,42 @@ def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
                       "level_set_model": str(sampling.get("model", "bilinear")),
                       "supersample": int(sampling.get("supersample", 1))})
     return out
+
+
+def window_surface_dataset(images: np.ndarray, params: Mapping, interface: Mapping,
+                           log=None) -> xr.Dataset:
+    """F_sv, F_ss and s of the void of one system's non-periodic 3D windows by minus-sampling
+    on the interior of level sets whose Gaussian width is tuned to the exact s
+    (:mod:`randmedia.describe.window_surface`; "pixels" model, the interface section's
+    supersample, r range and bin width).
+
+    Parameters
+    ----------
+    images : ndarray, shape (n_samples, nz, ny, nx)
+        0/1 window images, void = 0.
+    params : Mapping
+        The system's parameters (:func:`systems`).
+    interface : Mapping
+        The config section ``debye3d.interface``.
+    log : logging.Logger, optional
+        Progress log.
+
+    Returns
+    -------
+    xarray.Dataset
+        :func:`randmedia.describe.window_surface.window_surface_functions` output with the
+        attributes of :func:`level_set_datasets`.
+    """
+    from randmedia.describe.window_surface import tune_sigma_window, window_surface_functions
+
+    length = system_length(params)
+    s_exact = exact_specific_surface(params)
+    sigma, s_tuned = tune_sigma_window(images, s_exact, supersample=interface["supersample"],
+                                       bracket=tuple(interface["sigma_bracket"]), log=log)
+    surface = window_surface_functions(images, sigma=sigma, supersample=interface["supersample"],
+                                       r_max=interface["r_max_over_length"] * length,
+                                       bin_width=interface["bin_width"], log=log)
+    surface.attrs.update({"kind": params["kind"], "phi2": float(params["phi2"]), "length_scale": length,
+                          "s_exact": s_exact, "s_tuned": s_tuned, "image_side": int(images.shape[-1]),
+                          "sigma": float(sigma), "level_set_model": "pixels"})
+    return surface
