@@ -92,3 +92,16 @@ def test_quick_debye3d_target_runs_and_its_comparison_is_consistent(quick_run):
     for name in ("media", "s2", "surface", "pores", "chords"):
         assert (out / "figures" / f"{name}.pdf").stat().st_size > 0
         assert (out / "figures" / f"{name}.png").stat().st_size > 0
+
+
+def test_shell_average_weights_the_bin_by_r_squared():
+    from randmedia.compare.debye3d import shell_average
+
+    assert shell_average(lambda r: np.full_like(r, 2.5), 4.03, 0.5) == pytest.approx(2.5)
+    # bin of 4.03 at width 0.5 is [3.75, 4.25]: <r> = (3/4)(b^4 - a^4)/(b^3 - a^3)
+    low, high = 3.75, 4.25
+    expected = 0.75 * (high**4 - low**4) / (high**3 - low**3)
+    assert shell_average(lambda r: r, 4.03, 0.5) == pytest.approx(expected, rel=1e-12)
+    # a cusp inside the bin is averaged, not read at the label
+    cusp = shell_average(lambda r: np.abs(r - 4.0), 4.0, 0.5)
+    assert 0.1 < cusp < 0.15
