@@ -75,7 +75,8 @@ def test_quick_debye3d_target_runs_and_its_comparison_is_consistent(quick_run):
 
     from conftest import QUICK_RESULTS, assert_comparison_notes, run_snakemake
 
-    result = run_snakemake(quick_run, "--cores", "2", "--configfile", "config/quick.yaml", "debye3d")
+    # the target after `--`: --configfile takes every following word as a config file
+    result = run_snakemake(quick_run, "--cores", "2", "--configfile", "config/quick.yaml", "--", "debye3d")
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
     out = quick_run / QUICK_RESULTS / "debye3d"
     table = pd.read_csv(out / "comparison.csv")
