@@ -457,19 +457,7 @@ def surface_functions(images, *, sigma: float, supersample: int, r_max: float,
         return np.array([res[name] for res in results])
 
     r = binning.r_mean / supersample
-    curves = {name: stack(name) for name in ("F_sv", "F_ss", "S2_void")}
-    units = {"F_sv": f"1/{unit}", "F_ss": f"1/{unit}^2", "S2_void": "1"}
-    names = {"F_sv": "surface-void correlation function (void = phase 1)",
-             "F_ss": "surface-surface correlation function",
-             "S2_void": "two-point function of the void phase of the level-set medium"}
-    data = {}
-    for name, values in curves.items():
-        data[f"{name}_samples"] = (("sample", "r"), values,
-                                   {"units": units[name], "long_name": f"{names[name]}, per sample"})
-        data[name] = ("r", values.mean(axis=0),
-                      {"units": units[name], "long_name": f"{names[name]}, sample mean"})
-        data[f"{name}_sem"] = ("r", standard_error(values),
-                               {"units": units[name], "long_name": f"standard error of {name} over samples"})
+    data = curve_variables({name: stack(name) for name in ("F_sv", "F_ss", "S2_void")}, unit)
     data["s_samples"] = ("sample", stack("s"), {"units": f"1/{unit}", "long_name":
                          "specific surface of the level-set medium (interface area per volume)"
                          if three_d else
@@ -504,6 +492,26 @@ def surface_functions(images, *, sigma: float, supersample: int, r_max: float,
         },
         attrs=attrs,
     )
+
+
+def curve_variables(curves: dict, unit: str) -> dict:
+    """The Dataset variables of the curves F_sv, F_ss, S2_void (each (n_samples, n_r)): per
+    sample, sample mean and standard error on ``r``, with units in ``unit`` (pixel or voxel);
+    shared by the periodic (:func:`surface_functions`) and window
+    (:func:`randmedia.describe.window_surface.window_surface_functions`) estimators."""
+    units = {"F_sv": f"1/{unit}", "F_ss": f"1/{unit}^2", "S2_void": "1"}
+    names = {"F_sv": "surface-void correlation function (void = phase 1)",
+             "F_ss": "surface-surface correlation function",
+             "S2_void": "two-point function of the void phase of the level-set medium"}
+    data = {}
+    for name, values in curves.items():
+        data[f"{name}_samples"] = (("sample", "r"), values,
+                                   {"units": units[name], "long_name": f"{names[name]}, per sample"})
+        data[name] = ("r", values.mean(axis=0),
+                      {"units": units[name], "long_name": f"{names[name]}, sample mean"})
+        data[f"{name}_sem"] = ("r", standard_error(values),
+                               {"units": units[name], "long_name": f"standard error of {name} over samples"})
+    return data
 
 
 #: what a reader of a surface-function file requires

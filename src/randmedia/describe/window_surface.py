@@ -62,10 +62,10 @@ from scipy.ndimage import gaussian_filter
 
 from randmedia.describe.chords import LevelSet
 from randmedia.describe.isosurface import interface_triangles, surface_density
+from randmedia.describe.surface import curve_variables, tune_sigma
 from randmedia.describe.two_phase import RadialBinning
 from randmedia.describe.window import window_binning
 from randmedia.progress import Progress
-from randmedia.stats import standard_error
 
 #: scipy.ndimage.gaussian_filter's default kernel truncation, in standard deviations
 TRUNCATE = 4.0
@@ -300,19 +300,7 @@ def window_surface_functions(images, *, sigma: float, supersample: int, r_max: f
         return np.array([res[name] for res in results])
 
     unit = "voxel"
-    units = {"F_sv": f"1/{unit}", "F_ss": f"1/{unit}^2", "S2_void": "1"}
-    names = {"F_sv": "surface-void correlation function (void = phase 1)",
-             "F_ss": "surface-surface correlation function",
-             "S2_void": "two-point function of the void phase of the level-set medium"}
-    data = {}
-    for name in ("F_sv", "F_ss", "S2_void"):
-        values = stack(name)
-        data[f"{name}_samples"] = (("sample", "r"), values,
-                                   {"units": units[name], "long_name": f"{names[name]}, per sample"})
-        data[name] = ("r", values.mean(axis=0),
-                      {"units": units[name], "long_name": f"{names[name]}, sample mean"})
-        data[f"{name}_sem"] = ("r", standard_error(values),
-                               {"units": units[name], "long_name": f"standard error of {name} over samples"})
+    data = curve_variables({name: stack(name) for name in ("F_sv", "F_ss", "S2_void")}, unit)
     data["s_samples"] = ("sample", stack("s"), {"units": f"1/{unit}", "long_name":
                          "specific surface of the level-set medium (interface area per volume) "
                          "on the window's interior"})
@@ -388,8 +376,6 @@ def tune_sigma_window(images, s_target: float, *, supersample: int, margin: int 
     s : float
         Mean interior s at ``sigma``.
     """
-    from randmedia.describe.surface import tune_sigma
-
     images = np.asarray(images)
     if margin is None:
         margin = default_margin(bracket[1], supersample)
