@@ -3,13 +3,15 @@
 # * Yeong-Torquato constructions of the Debye S2 (Ma & Torquato 2020, Eq. 21) on periodic
 #   N^3 voxels, Poisson-plane tessellations with the same S2 (non-periodic windows) and
 #   digitized overlapping spheres (exact 3D descriptors: the estimators' validation);
-# * per system: S2 against the exact one (Delta S2 of the constructions);
+# * per system: S2 against the exact one (Delta S2 of the constructions), level-set surface
+#   functions, pores (periodic systems) and chords (window estimators for the windows);
 # * `snakemake debye3d`: not part of `all` (the papers); the system table is
 #   randmedia.studies.debye3d.systems.
 
 import re
 
 from randmedia.studies.debye3d import LEVEL_SET_KINDS as DEBYE3D_LEVEL_SET_KINDS
+from randmedia.studies.debye3d import WINDOW_KINDS as DEBYE3D_WINDOW_KINDS
 from randmedia.studies.debye3d import systems as debye3d_systems
 
 DEBYE3D_SYSTEMS = debye3d_systems(config["debye3d"])
@@ -109,7 +111,7 @@ rule debye3d_level_set:
         "../scripts/debye3d/level_set.py"
 
 
-DEBYE3D_WINDOW_SYSTEMS = [name for name, p in DEBYE3D_SYSTEMS.items() if p["kind"] == "planes"]
+DEBYE3D_WINDOW_SYSTEMS = [name for name, p in DEBYE3D_SYSTEMS.items() if p["kind"] in DEBYE3D_WINDOW_KINDS]
 
 
 rule debye3d_window_surface:
@@ -136,7 +138,8 @@ rule debye3d_window_surface:
 
 
 rule debye3d_chords:
-    """L(z) and p(z) of the void of a periodic system, lines in many directions."""
+    """L(z) and p(z) of the void of a system, lines in many directions (clipped to the window's
+    interior for the Poisson-plane windows)."""
     input:
         samples=lambda wildcards: DEBYE3D_SAMPLES[wildcards.system],
         surface=lambda wildcards: [DEBYE3D_SURFACE.format(system=wildcards.system)] if DEBYE3D_CHORDS_TUNED else [],
@@ -144,7 +147,7 @@ rule debye3d_chords:
     output:
         DEBYE3D_CHORDS,
     wildcard_constraints:
-        system=DEBYE3D_LEVEL_SET_SYSTEM,
+        system="|".join(re.escape(name) for name in DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
     params:
         system=lambda wildcards: DEBYE3D_SYSTEMS[wildcards.system],
         chords=config["debye3d"]["chords"],
@@ -211,7 +214,7 @@ rule debye3d_figure_s2:
 for _name, _files, _systems in (
     ("surface", DEBYE3D_SURFACE, DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
     ("pores", DEBYE3D_PORES, DEBYE3D_LEVEL_SET_SYSTEMS),
-    ("chords", DEBYE3D_CHORDS, DEBYE3D_LEVEL_SET_SYSTEMS),
+    ("chords", DEBYE3D_CHORDS, DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
 ):
 
     rule:
@@ -238,7 +241,7 @@ rule debye3d_comparison:
         s2=expand(DEBYE3D_S2, system=DEBYE3D_SYSTEMS),
         surface=expand(DEBYE3D_SURFACE, system=DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
         pores=expand(DEBYE3D_PORES, system=DEBYE3D_LEVEL_SET_SYSTEMS),
-        chords=expand(DEBYE3D_CHORDS, system=DEBYE3D_LEVEL_SET_SYSTEMS),
+        chords=expand(DEBYE3D_CHORDS, system=DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
         code=script_sources("../scripts/debye3d/comparison.py"),
     output:
         comparison=results_path("debye3d/comparison.csv"),

@@ -15,7 +15,9 @@ Rows (columns of :mod:`randmedia.compare`):
   exponential L(z), p(z) of Sec. VII, with the estimator error validated on overlapping
   spheres as systematic margin; Eqs. (44)-(45) also on the Poisson-plane windows (same S2,
   :func:`surface_conjecture_rows`), the contrast of two media with one S2;
-* the validation of every 3D estimator on overlapping spheres (:func:`sphere_rows`).
+* the validation of every 3D estimator on overlapping spheres (:func:`sphere_rows`), and of the
+  window chord estimator on the Poisson planes, whose L(z), p(z) are exactly exponential
+  (:func:`plane_rows`).
 """
 
 from __future__ import annotations
@@ -91,6 +93,8 @@ PORE_RADII = (0.25, 0.5, 1.0)
 REASON_CONJECTURE = ("the conjectured form differs from the constructed media beyond the "
                      "statistical and validated estimator errors")
 REASON_ESTIMATOR = "estimator bias on the digitized exact medium (resolution, level set)"
+REASON_ESTIMATOR_WINDOW = ("window chord estimator bias on the digitized Poisson planes (exact exponential "
+                           "L, p): resolution of thin cells, level set, or too few windows")
 
 
 def _nearest(values: np.ndarray, target: float) -> int:
@@ -190,22 +194,38 @@ def surface_conjecture_rows(system: str, surface: xr.Dataset, k_sigma: float,
     from randmedia.theory.debye_formulas import debye_surface_surface, debye_surface_void
 
     a, phi2 = float(surface.attrs["length_scale"]), float(surface.attrs["phi2"])
-    rows = []
+    return _surface_rows(
+        surface, {"F_sv": lambda r: debye_surface_void(r, phi2, a, dim=3),
+                  "F_ss": lambda r: debye_surface_surface(r, phi2, a, dim=3)},
+        quantity=lambda name: f"{name} (Eq. {44 if name == 'F_sv' else 45})",
+        item=lambda r: f"{system} r={r:.3f} voxel (r/a={r / a:.3f})",
+        k_sigma=k_sigma, reason=REASON_CONJECTURE, validation=validation)
+
+
+def _surface_rows(surface: xr.Dataset, references: Mapping, quantity, item, k_sigma: float,
+                  reason: str, validation: Mapping | None = None) -> list[dict]:
+    """F_sv and F_ss rows at :data:`SURFACE_RADII` x the system's length (bins from two
+    sub-voxels on: the area deposit smears ~1 sub-voxel) against a reference f(r) averaged over
+    each radial bin (:func:`shell_average`); systematic margin the validated estimator error at
+    the same distance in voxels (:func:`_margin`; none without ``validation``).
+
+    ``references`` maps "F_sv"/"F_ss" to a vectorized f(r in voxels); ``quantity(name)`` and
+    ``item(r)`` make the rows' labels."""
+    length = float(surface.attrs["length_scale"])
     r = surface["r"].values
     width = float(surface.attrs["bin_width"])
-    resolved = 2.0 / float(surface.attrs["supersample"])  # the deposit smears ~1 sub-voxel
-    for name, formula, equation in (("F_sv", debye_surface_void, "Eq. 44"),
-                                    ("F_ss", debye_surface_surface, "Eq. 45")):
+    resolved = 2.0 / float(surface.attrs["supersample"])
+    rows = []
+    for name, reference in references.items():
         for multiple in SURFACE_RADII:
-            b = _nearest(r, multiple * a)
+            b = _nearest(r, multiple * length)
             if r[b] < resolved:
                 continue
-            published = shell_average(lambda x: formula(x, phi2, a, dim=3), r[b], width)
-            rows.append(compare(
-                f"{name} ({equation})", f"{system} r={r[b]:.3f} voxel (r/a={r[b] / a:.3f})", published,
-                float(surface[name][b]), float(surface[f"{name}_sem"][b]), k_sigma=k_sigma,
-                systematic=_margin(validation, name, r[b]) * abs(published),
-                reason_if_failed=REASON_CONJECTURE))
+            published = shell_average(reference, r[b], width)
+            rows.append(compare(quantity(name), item(r[b]), published, float(surface[name][b]),
+                                float(surface[f"{name}_sem"][b]), k_sigma=k_sigma,
+                                systematic=_margin(validation, name, r[b]) * abs(published),
+                                reason_if_failed=reason))
     return rows
 
 
@@ -235,18 +255,31 @@ def construction_rows(system: str, surface: xr.Dataset, chords: xr.Dataset, k_si
     list of dict
         Comparison rows.
     """
-    a, phi2 = float(surface.attrs["length_scale"]), float(surface.attrs["phi2"])
-    phi1 = 1.0 - phi2
     rows = surface_conjecture_rows(system, surface, k_sigma, validation)
+    rows += exponential_chord_rows(system, chords, k_sigma, validation, reason=REASON_CONJECTURE)
+    rows.append(_mean_chord_row(system, chords, k_sigma))
+    return rows
+
+
+def exponential_chord_rows(system: str, chords: xr.Dataset, k_sigma: float,
+                           validation: Mapping | None = None, reason: str = REASON_CONJECTURE) -> list[dict]:
+    """L(z) against phi1 e^(-phi2 z / a) and p(z) (bin average) against (phi2 / a) e^(-phi2 z / a)
+    at :data:`CHORD_LENGTHS` x a, tolerance k_sigma SEM plus the validated estimator error
+    (``validation``). The conjecture of Sec. VII for the constructions; exact for Poisson-plane
+    tessellations (planes cross a line at rate 1/a, a void run ends at a crossing into a
+    solid cell, probability phi2), where the rows test the window chord estimator (``reason``)."""
+    a, phi2 = float(chords.attrs["length_scale"]), float(chords.attrs["phi2"])
+    phi1 = 1.0 - phi2
     z, zc = chords["z"].values, chords["z_chord"].values
     width = float(chords.attrs["chord_bin"])
+    rows = []
     for multiple in CHORD_LENGTHS:
         b = _nearest(z, multiple * a)
         published = phi1 * np.exp(-phi2 * z[b] / a)
         rows.append(compare("L (exponential, L'(0) = -s/4)", f"{system} z={z[b]:.2f} voxel (z/a={z[b] / a:.2f})",
                             published, float(chords["L"][b]), float(chords["L_sem"][b]), k_sigma=k_sigma,
                             systematic=_margin(validation, "L", z[b]) * published,
-                            reason_if_failed=REASON_CONJECTURE))
+                            reason_if_failed=reason))
         c = _nearest(zc, multiple * a)
         low, high = zc[c] - width / 2, zc[c] + width / 2  # bin average of the exponential density
         published = (np.exp(-phi2 * low / a) - np.exp(-phi2 * high / a)) / width
@@ -254,7 +287,20 @@ def construction_rows(system: str, surface: xr.Dataset, chords: xr.Dataset, k_si
                             f"{system} z={zc[c]:.2f} voxel (z/a={zc[c] / a:.2f})", published,
                             float(chords["p"][c]), float(chords["p_sem"][c]), k_sigma=k_sigma,
                             systematic=_margin(validation, "p", zc[c]) * published,
-                            reason_if_failed=REASON_CONJECTURE))
+                            reason_if_failed=reason))
+    return rows
+
+
+def plane_rows(system: str, surface: xr.Dataset, chords: xr.Dataset, k_sigma: float,
+               validation: Mapping | None = None) -> list[dict]:
+    """A Poisson-plane system (same S2 as the constructions, another medium): F_sv, F_ss against
+    Eqs. (44)-(45) (:func:`surface_conjecture_rows`, the contrast with the constructions), and
+    the window chord estimator against the exact exponential L(z), p(z) and mean chord
+    a / phi2 = 4 phi1 / s of these tessellations (:func:`exponential_chord_rows`; tolerance
+    k_sigma SEM only: these rows validate the window estimator)."""
+    rows = surface_conjecture_rows(system, surface, k_sigma, validation)
+    # a validation of the window estimator itself: no margin borrowed from the spheres
+    rows += exponential_chord_rows(system, chords, k_sigma, None, reason=REASON_ESTIMATOR_WINDOW)
     rows.append(_mean_chord_row(system, chords, k_sigma))
     return rows
 
@@ -295,20 +341,11 @@ def sphere_rows(system: str, surface: xr.Dataset, pores: xr.Dataset, chords: xr.
     from randmedia.theory import overlapping
 
     radius, phi2 = float(surface.attrs["length_scale"]), float(surface.attrs["phi2"])
-    rows = []
-    r = surface["r"].values
-    width = float(surface.attrs["bin_width"])
-    resolved = 2.0 / float(surface.attrs["supersample"])
-    for name, exact in (("F_sv", overlapping.surface_void), ("F_ss", overlapping.surface_surface)):
-        for multiple in SURFACE_RADII:
-            b = _nearest(r, multiple * radius)
-            if r[b] < resolved:
-                continue
-            published = shell_average(lambda x: exact(x, radius, phi2, dim=3), r[b], width)
-            rows.append(compare(f"{name} (spheres, exact)", f"{system} r/R={r[b] / radius:.3f}",
-                                published, float(surface[name][b]),
-                                float(surface[f"{name}_sem"][b]), k_sigma=k_sigma,
-                                reason_if_failed=REASON_ESTIMATOR))
+    rows = _surface_rows(
+        surface, {"F_sv": lambda r: overlapping.surface_void(r, radius, phi2, dim=3),
+                  "F_ss": lambda r: overlapping.surface_surface(r, radius, phi2, dim=3)},
+        quantity=lambda name: f"{name} (spheres, exact)",
+        item=lambda r: f"{system} r/R={r / radius:.3f}", k_sigma=k_sigma, reason=REASON_ESTIMATOR)
     delta = pores["delta"].values
     for multiple in PORE_RADII:
         b = _nearest(delta, multiple * radius)

@@ -538,11 +538,17 @@ def lineal_path_from_runs(runs: np.ndarray, line_length: float, n_lines: int, z:
     z = np.asarray(z, dtype=float)
     if np.any(z >= line_length):
         raise ValueError("z must be shorter than the sampling lines")
+    return segments_in_phase(runs, z) / (n_lines * (line_length - z))
+
+
+def segments_in_phase(runs: np.ndarray, z: np.ndarray) -> np.ndarray:
+    """sum_k max(0, l_k - z) for every z: the measure of segment starts x along the lines
+    whose segment [x, x + z] lies in one run (the numerator of L(z)); sorted tail sums."""
     ordered = np.sort(runs)
     tail_sum = np.concatenate([np.cumsum(ordered[::-1])[::-1], [0.0]])
     first_longer = np.searchsorted(ordered, z, side="right")
     n_longer = ordered.size - first_longer
-    return (tail_sum[first_longer] - z * n_longer) / (n_lines * (line_length - z))
+    return tail_sum[first_longer] - z * n_longer
 
 
 def chord_density_from_runs(runs, complete, line_length: float, edges: np.ndarray):
@@ -613,8 +619,7 @@ def lineal_path_and_chords(images, phase: int, rng: np.random.Generator, *, z_ma
         raise ValueError("expected images of shape (n_samples, ny, nx) or (n_samples, nz, ny, nx), "
                          f"got {images.shape}")
     unit = "pixel" if images.ndim == 3 else "voxel"
-    z = np.arange(0.0, z_max + 0.5 * dz, dz)
-    edges = np.arange(0.0, z_max + chord_bin, chord_bin)
+    z, edges = chord_grids(z_max, dz, chord_bin)
     n = images.shape[0]
     lineal = np.empty((n, z.size))
     density = np.empty((n, edges.size - 1))
@@ -623,7 +628,24 @@ def lineal_path_and_chords(images, phase: int, rng: np.random.Generator, *, z_ma
         runs, complete, length, n_lines = sample_chords(image, phase, rng, **sampling)
         lineal[k] = lineal_path_from_runs(runs, length, n_lines, z)
         density[k], mean_chord[k] = chord_density_from_runs(runs, complete, length, edges)
+    return chord_functions_dataset(lineal, density, mean_chord, z, edges, phase=phase, unit=unit)
 
+
+def chord_grids(z_max: float, dz: float, chord_bin: float) -> tuple[np.ndarray, np.ndarray]:
+    """The z grid of L(z) (0 ... z_max in steps dz) and the chord-length bin edges
+    (0 ... z_max + chord_bin in steps chord_bin)."""
+    return np.arange(0.0, z_max + 0.5 * dz, dz), np.arange(0.0, z_max + chord_bin, chord_bin)
+
+
+def chord_functions_dataset(lineal: np.ndarray, density: np.ndarray, mean_chord: np.ndarray,
+                            z: np.ndarray, edges: np.ndarray, *, phase: int, unit: str) -> xr.Dataset:
+    """The chords file from per-sample L(z) (``lineal``, shape (n, z)), p(z) (``density``, shape
+    (n, bins)) and mean chords: sample means and SEMs, and ``p_from_L`` -- Eq. (19),
+    p(z) = (l_C / phi) L''(z), a central second difference over +-2 lengths of the mean L with
+    the sampled mean chord l_C. ``unit`` is "pixel" or "voxel"."""
+    n = lineal.shape[0]
+    dz = float(z[1] - z[0])
+    chord_bin = float(edges[1] - edges[0])
     centres = 0.5 * (edges[1:] + edges[:-1])
     # Eq. (19): p(z) = (l_C / phi) L''(z), central second difference over +-2 px (voxels) of the mean L
     lag = max(1, int(round(2.0 / dz)))

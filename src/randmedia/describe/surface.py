@@ -631,7 +631,7 @@ def tune_sigma(images, s_target: float, *, supersample: int, model: str = "pixel
         evaluations += 1
         if log is not None:
             per = (time.perf_counter() - started) / evaluations
-            log.info("tuning sigma: evaluation %d (of ~%d): sigma = %.4f px, s - s_target = "
+            log.info("tuning sigma: evaluation %d (of ~%d): sigma = %.4f grid spacings, s - s_target = "
                      "%.3g, %.1f s per evaluation, ETA ~ %.0f s", evaluations, most, sigma,
                      value, per, per * max(most - evaluations, 0))
         return value

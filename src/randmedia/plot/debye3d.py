@@ -242,12 +242,13 @@ def pores(inputs, settings, log):
 def chords(inputs, settings, log):
     """L(z) and p(z) of the constructions against the exponential forms with the exact slope,
     phi1 e^(-phi2 z / a) and (phi2 / a) e^(-phi2 z / a) (dashed; L'(0) = -s/4 with the 3D
-    s = 4 phi1 phi2 / a), and the overlapping spheres' L(z) against exact (Eq. 38, d = 3).
+    s = 4 phi1 phi2 / a), with the Poisson-plane windows of the same phi2 (open markers; exactly
+    exponential), and the overlapping spheres' L(z) against exact (Eq. 38, d = 3).
 
     Parameters
     ----------
     inputs : dict
-        ``descriptors``: chords files of the periodic systems.
+        ``descriptors``: chords files (constructions, Poisson planes, spheres).
     settings : dict
         unused.
     log : logging.Logger
@@ -260,6 +261,7 @@ def chords(inputs, settings, log):
     from randmedia.theory import overlapping
 
     yt, spheres = _by_kind(inputs["descriptors"])
+    planes = {float(ds.attrs["phi2"]): ds for ds in _by_kind(inputs["descriptors"], "planes")[0]}
     fig, axes = figure(ncols=3, nrows=1, width=PAGE_WIDTH, aspect=0.9)
     for ds in yt:
         a, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
@@ -271,6 +273,11 @@ def chords(inputs, settings, log):
         axes[1].errorbar(zc / a, a * ds["p"].values, yerr=a * ds["p_sem"].values, fmt="o", ms=1.5,
                          lw=0.5, color=colour)
         axes[1].plot(zc / a, phi2 * np.exp(-phi2 * zc / a), "--", lw=0.7, color=colour)
+        if phi2 in planes:  # same S2, another medium (exactly exponential): open markers
+            other = planes[phi2]
+            zp, zcp = other["z"].values, other["z_chord"].values
+            axes[0].plot(zp[::4] / a, other["L"].values[::4], "o", ms=2, mfc="none", mew=0.4, color=colour)
+            axes[1].plot(zcp / a, a * other["p"].values, "o", ms=2, mfc="none", mew=0.4, color=colour)
     for ds in spheres:
         radius, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
         z = ds["z"].values
@@ -278,7 +285,7 @@ def chords(inputs, settings, log):
                          label="ours")
         axes[2].plot(z / radius, overlapping.lineal_path_void(z, radius, phi2, dim=3), "k-", lw=0.7,
                      label="exact")
-    axes[0].set_ylabel("L(z), constructions")
+    axes[0].set_ylabel("L(z) (dashed: exponential; open: Poisson planes)")
     axes[1].set_ylabel("a p(z)")
     axes[2].set_ylabel("L(z), overlapping spheres")
     for ax, label in zip(axes, ("z / a", "z / a", "z / R")):

@@ -161,9 +161,17 @@ def systems(section: Mapping) -> dict[str, dict]:
 
 #: kinds whose periodic level-set descriptors (surface functions, pores, chords) are computed.
 #: The Poisson-plane windows are not periodic and these estimators wrap around the image (the
-#: seam adds ~6 phi1 phi2 / L of interface per volume); they get S2 and the surface functions
-#: by the window (minus-sampling) estimators (:func:`window_surface_dataset`).
+#: seam adds ~6 phi1 phi2 / L of interface per volume); they get S2, the surface functions and
+#: the chords by the window (minus-sampling) estimators (:func:`window_surface_dataset`,
+#: :func:`chords_dataset`).
 LEVEL_SET_KINDS = ("yt", "spheres")
+#: kinds observed in non-periodic windows
+WINDOW_KINDS = ("planes",)
+
+
+def is_window(params: Mapping) -> bool:
+    """Whether the system's samples are windows of a non-periodic medium (:data:`WINDOW_KINDS`)."""
+    return params["kind"] in WINDOW_KINDS
 
 
 def exact_specific_surface(params: Mapping) -> float:
@@ -228,15 +236,18 @@ def level_set_datasets(images: np.ndarray, params: Mapping, interface: Mapping,
 
 def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
                    rng: np.random.Generator, level_set: Mapping | None = None) -> xr.Dataset:
-    """L(z) and p(z) of the void of one system's periodic 3D images along lines in many
-    directions (:func:`randmedia.describe.chords.lineal_path_and_chords`), on the level set
-    of the surface functions when ``chords["sigma"]`` is "tuned" (``level_set``: its
-    ``sigma``, ``supersample``, ``level_set_model`` -- the surface file's attributes).
+    """L(z) and p(z) of the void of one system's 3D images along lines in many directions:
+    through the periodic images (:func:`randmedia.describe.chords.lineal_path_and_chords`) or,
+    for window systems (Poisson planes), along lines clipped to the window's interior
+    (:func:`randmedia.describe.window_chords.window_lineal_path_and_chords`, "pixels" level
+    set only). On the level set of the surface functions when ``chords["sigma"]`` is "tuned"
+    (``level_set``: its ``sigma``, ``supersample``, ``level_set_model`` -- the surface file's
+    attributes).
 
     Parameters
     ----------
     images : ndarray, shape (n_samples, nz, ny, nx)
-        Periodic 0/1 images, void = 0.
+        0/1 images, void = 0.
     params : Mapping
         The system's parameters (:func:`systems`).
     chords : Mapping
@@ -253,6 +264,7 @@ def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
         With attributes ``kind``, ``phi2``, ``length_scale``, ``s_exact``.
     """
     from randmedia.describe.chords import lineal_path_and_chords
+    from randmedia.describe.window_chords import window_lineal_path_and_chords
 
     sampling = dict(chords)
     length = system_length(params)
@@ -262,7 +274,16 @@ def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
             raise ValueError("chords sigma 'tuned' needs the surface functions' level set")
         sampling.update(sigma=float(level_set["sigma"]), supersample=int(level_set["supersample"]),
                         model=str(level_set["level_set_model"]))
-    out = lineal_path_and_chords(images, 0, rng, z_max=z_max, **sampling)
+    if is_window(params):
+        model = sampling.pop("model", "pixels")
+        if model != "pixels":
+            raise ValueError(f"debye3d chords of window system {params['kind']!r}: the window estimator "
+                             f"walks the 'pixels' level set only, got model {model!r}")
+        sampling["supersample"] = int(sampling.get("supersample", 1))
+        out = window_lineal_path_and_chords(images, 0, rng, z_max=z_max, **sampling)
+        sampling["model"] = model
+    else:
+        out = lineal_path_and_chords(images, 0, rng, z_max=z_max, **sampling)
     out.attrs.update({"kind": params["kind"], "phi2": float(params["phi2"]), "length_scale": length,
                       "s_exact": exact_specific_surface(params), "sigma": float(sampling["sigma"]),
                       "level_set_model": str(sampling.get("model", "bilinear")),

@@ -7,8 +7,7 @@ log = start_job(snakemake)
 import xarray as xr
 
 from randmedia.compare import comparison_frame, notes_frame
-from randmedia.compare.debye3d import (construction_rows, s2_rows, sphere_rows, sphere_validation,
-                                      surface_conjecture_rows)
+from randmedia.compare.debye3d import construction_rows, plane_rows, s2_rows, sphere_rows, sphere_validation
 from randmedia.io import write_csv
 
 k_sigma = snakemake.params.k_sigma
@@ -37,7 +36,7 @@ for system in sorted(surface):
         rows += construction_rows(system, surface[system], chords[system], k_sigma, validation)
 for system in sorted(surface):
     if surface[system].attrs["kind"] == "planes":
-        rows += surface_conjecture_rows(system, surface[system], k_sigma, validation)
+        rows += plane_rows(system, surface[system], chords[system], k_sigma, validation)
 frame = comparison_frame(rows)
 log.info("%d rows, %d passed", len(frame), int(frame["passed"].sum()))
 for _, row in frame[~frame["passed"]].iterrows():
