@@ -4,7 +4,7 @@
 #   N^3 voxels, Poisson-plane tessellations with the same S2 (non-periodic windows) and
 #   digitized overlapping spheres (exact 3D descriptors: the estimators' validation);
 # * per system: S2 against the exact one (Delta S2 of the constructions), level-set surface
-#   functions, pores (periodic systems) and chords (window estimators for the windows);
+#   functions, pores and chords (window estimators for the windows);
 # * `snakemake debye3d`: not part of `all` (the papers); the system table is
 #   randmedia.studies.debye3d.systems.
 
@@ -137,6 +137,32 @@ rule debye3d_window_surface:
         "../scripts/debye3d/window_surface.py"
 
 
+rule debye3d_window_pores:
+    """F(delta), P(delta), <delta> of a Poisson-plane system's windows (reduced-sample estimator)
+    on the level set of its window surface functions."""
+    input:
+        samples=lambda wildcards: DEBYE3D_SAMPLES[wildcards.system],
+        surface=DEBYE3D_SURFACE,
+        code=script_sources("../scripts/debye3d/window_pores.py"),
+    output:
+        DEBYE3D_PORES,
+    wildcard_constraints:
+        system="|".join(re.escape(name) for name in DEBYE3D_WINDOW_SYSTEMS) or "no-window-system",
+    params:
+        system=lambda wildcards: DEBYE3D_SYSTEMS[wildcards.system],
+        interface=config["debye3d"]["interface"],
+        seed=config["seed"],
+    benchmark:
+        results_path("debye3d/benchmarks/window_pores_{system}.tsv")
+    log:
+        results_path("debye3d/logs/window_pores_{system}.log"),
+    threads: 1
+    resources:
+        mem_mb=6000,
+    script:
+        "../scripts/debye3d/window_pores.py"
+
+
 rule debye3d_chords:
     """L(z) and p(z) of the void of a system, lines in many directions (clipped to the window's
     interior for the Poisson-plane windows)."""
@@ -213,7 +239,7 @@ rule debye3d_figure_s2:
 
 for _name, _files, _systems in (
     ("surface", DEBYE3D_SURFACE, DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
-    ("pores", DEBYE3D_PORES, DEBYE3D_LEVEL_SET_SYSTEMS),
+    ("pores", DEBYE3D_PORES, DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
     ("chords", DEBYE3D_CHORDS, DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
 ):
 

@@ -346,11 +346,31 @@ def pore_size_functions(images, rng: np.random.Generator, *, sigma: float, super
         mean_pixel_centre[k] = centre_distances.mean()
         P_pixel_centre[k] = _histogram_density(centre_distances, edges)
         progress.step()
-    centres = 0.5 * (edges[1:] + edges[:-1])
     attrs = {"sigma": float(sigma), "supersample": int(supersample), "level_set_model": model,
              "delta_bin_width": float(delta_bin), "k_candidates": int(k_candidates)}
     if three_d:
         attrs["dimension"] = 3
+    diagnostics = {
+        "mean_delta_pixel_centres_samples": ("sample", mean_pixel_centre, {"units": unit,
+            "long_name": f"diagnostic: mean distance from void {cell} centres to the nearest "
+                         f"phase-2 {cell} centre (biased by about +1/2 {cell})"}),
+        "P_pixel_centres_samples": (("sample", "delta_bin"), P_pixel_centre, {"units": f"1/{unit}",
+            "long_name": f"second reading: histogram density of the {cell}-centre distances "
+                         f"(void {cell} centre to nearest phase-2 {cell} centre) per sample"}),
+    }
+    return pore_functions_dataset(F, P, mean_delta, max_delta, n_points, edges, unit=unit, attrs=attrs,
+                                  extra=diagnostics)
+
+
+def pore_functions_dataset(F: np.ndarray, P: np.ndarray, mean_delta: np.ndarray, max_delta: np.ndarray,
+                           n_points: np.ndarray, edges: np.ndarray, *, unit: str, attrs: dict,
+                           extra: dict | None = None) -> xr.Dataset:
+    """The pore-size file from per-sample F on the grid ``edges`` (shape (n, grid)), P on the
+    bins between them (shape (n, bins)), <delta>, the largest distance and the query-point
+    count: sample means and SEMs; ``extra`` variables (on ``sample``/``delta_bin``) are added
+    as given; ``unit`` is "pixel" or "voxel"."""
+    n = F.shape[0]
+    centres = 0.5 * (edges[1:] + edges[:-1])
     return xr.Dataset(
         {
             "F_samples": (("sample", "delta"), F, {"units": "1", "long_name":
@@ -370,12 +390,7 @@ def pore_size_functions(images, rng: np.random.Generator, *, sigma: float, super
                                   "largest pore size found per sample"}),
             "n_points_samples": ("sample", n_points, {"units": "1", "long_name":
                                  "void query points per sample"}),
-            "mean_delta_pixel_centres_samples": ("sample", mean_pixel_centre, {"units": unit,
-                "long_name": f"diagnostic: mean distance from void {cell} centres to the nearest "
-                             f"phase-2 {cell} centre (biased by about +1/2 {cell})"}),
-            "P_pixel_centres_samples": (("sample", "delta_bin"), P_pixel_centre, {"units": f"1/{unit}",
-                "long_name": f"second reading: histogram density of the {cell}-centre distances "
-                             f"(void {cell} centre to nearest phase-2 {cell} centre) per sample"}),
+            **(extra or {}),
         },
         coords={
             "delta": ("delta", edges, {"units": unit, "long_name": "pore radius delta"}),

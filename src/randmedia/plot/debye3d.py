@@ -195,13 +195,14 @@ def surface(inputs, settings, log):
 
 
 def pores(inputs, settings, log):
-    """F(delta) of the constructions per phi2 (against delta / a) and of the overlapping
-    spheres against their exact F (Eq. 36, d = 3).
+    """F(delta) of the constructions per phi2 (against delta / a; dashed: the Poisson-plane
+    windows of the same phi2, reduced-sample estimator) and of the overlapping spheres against
+    their exact F (Eq. 36, d = 3).
 
     Parameters
     ----------
     inputs : dict
-        ``descriptors``: pore-size files of the periodic systems.
+        ``descriptors``: pore-size files (constructions, Poisson planes, spheres).
     settings : dict
         unused.
     log : logging.Logger
@@ -214,12 +215,16 @@ def pores(inputs, settings, log):
     from randmedia.theory import overlapping
 
     yt, spheres = _by_kind(inputs["descriptors"])
+    planes = {float(ds.attrs["phi2"]): ds for ds in _by_kind(inputs["descriptors"], "planes")[0]}
     fig, axes = figure(ncols=2, nrows=1, width=PAGE_WIDTH, aspect=0.7)
     for ds in yt:
         a, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
         delta = ds["delta"].values
-        axes[0].errorbar(delta / a, ds["F"].values, yerr=ds["F_sem"].values, fmt="-", lw=0.8,
-                         label=f"$\\phi_2$ = {phi2:g}")
+        line = axes[0].errorbar(delta / a, ds["F"].values, yerr=ds["F_sem"].values, fmt="-", lw=0.8,
+                                label=f"$\\phi_2$ = {phi2:g}")
+        if phi2 in planes:  # same S2, another medium (window estimator): dashed
+            other = planes[phi2]
+            axes[0].plot(other["delta"].values / a, other["F"].values, "--", lw=0.7, color=line[0].get_color())
     for ds in spheres:
         radius, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
         delta = ds["delta"].values
@@ -228,7 +233,7 @@ def pores(inputs, settings, log):
         axes[1].plot(delta / radius, overlapping.pore_size_complementary_cdf(delta, radius, phi2, dim=3),
                      "k-", lw=0.7, label="exact")
     axes[0].set_xlabel(r"$\delta / a$")
-    axes[0].set_ylabel(r"$F(\delta)$, constructions")
+    axes[0].set_ylabel(r"$F(\delta)$ (dashed: Poisson planes)")
     axes[1].set_xlabel(r"$\delta / R$")
     axes[1].set_ylabel(r"$F(\delta)$, overlapping spheres")
     for ax in axes:

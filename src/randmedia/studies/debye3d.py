@@ -234,6 +234,56 @@ def level_set_datasets(images: np.ndarray, params: Mapping, interface: Mapping,
     return surface, pores
 
 
+#: window pore sizes stop at this fraction of the interior side (reduced-sample estimator:
+#: at delta = side / 4 the query points farther than delta from the faces fill 1/8 of it)
+WINDOW_DELTA_FRACTION = 0.25
+
+
+def window_pores_dataset(images: np.ndarray, params: Mapping, interface: Mapping, level_set: Mapping,
+                         rng: np.random.Generator, log=None) -> xr.Dataset:
+    """F, P, <delta> of the void of one system's 3D windows by the reduced-sample estimator
+    (:func:`randmedia.describe.window_pores.window_pore_size_functions`) on the level set of the
+    window surface functions (``level_set``: its file's attributes ``sigma``, ``supersample``);
+    delta up to ``interface["delta_max_over_length"]`` lengths, at most
+    :data:`WINDOW_DELTA_FRACTION` of the interior side.
+
+    Parameters
+    ----------
+    images : ndarray, shape (n_samples, nz, ny, nx)
+        0/1 window images, void = 0.
+    params : Mapping
+        The system's parameters (:func:`systems`).
+    interface : Mapping
+        The config section ``debye3d.interface`` (delta_bin, delta_max_over_length,
+        k_candidates).
+    level_set : Mapping
+        The window surface file's attributes.
+    rng : numpy.random.Generator
+        Source of the query points.
+    log : logging.Logger, optional
+        Progress log.
+
+    Returns
+    -------
+    xarray.Dataset
+        With attributes ``kind``, ``phi2``, ``length_scale``, ``s_exact``, ``image_side``.
+    """
+    from randmedia.describe.window_pores import window_pore_size_functions
+    from randmedia.describe.window_surface import default_margin
+
+    length = system_length(params)
+    sigma, supersample = float(level_set["sigma"]), int(level_set["supersample"])
+    interior = min(images.shape[1:]) - 2 * default_margin(sigma, supersample) / supersample
+    delta_bin = float(interface["delta_bin"])
+    delta_max = min(interface["delta_max_over_length"] * length, WINDOW_DELTA_FRACTION * interior)
+    delta_max = delta_bin * max(2, int(delta_max / delta_bin))
+    pores = window_pore_size_functions(images, rng, sigma=sigma, supersample=supersample, delta_max=delta_max,
+                                       delta_bin=delta_bin, k_candidates=interface["k_candidates"], log=log)
+    pores.attrs.update({"kind": params["kind"], "phi2": float(params["phi2"]), "length_scale": length,
+                        "s_exact": exact_specific_surface(params), "image_side": int(images.shape[-1])})
+    return pores
+
+
 def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
                    rng: np.random.Generator, level_set: Mapping | None = None) -> xr.Dataset:
     """L(z) and p(z) of the void of one system's 3D images along lines in many directions:
