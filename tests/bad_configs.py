@@ -189,4 +189,7 @@ BAD_CONFIGS += [
     ("debye3d_s2_beyond_half", _set(("debye3d", "s2", "r_max_over_length"), 8.0),
      "debye3d.s2.r_max_over_length"),
     ("debye3d_unknown_key", _set(("debye3d", "media", "L"), 64), "debye3d.media.L"),
+    # a wide sigma bracket leaves a 6-voxel interior in the 32^3 windows: F_sv out to 9 voxels cannot fit
+    ("debye3d_window_interior_too_small", _set(("debye3d", "interface", "sigma_bracket"), [0.1, 3.0]),
+     "debye3d.interface.r_max_over_length"),
 ]

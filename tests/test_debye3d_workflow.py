@@ -92,6 +92,13 @@ def test_quick_debye3d_target_runs_and_its_comparison_is_consistent(tmp_path):
     chords = xr.load_dataset(out / "descriptors" / "yt_phi0.5_chords.nc")
     assert chords.attrs["sigma"] == surface.attrs["sigma"] and chords.attrs["supersample"] == 2
     assert abs(surface.attrs["s_tuned"] / surface.attrs["s_exact"] - 1) < 0.01
+    # the windows: tuned, measured, walked and probed on one interior (the surface file's margin)
+    window = xr.load_dataset(out / "descriptors" / "planes_phi0.3_surface.nc")
+    assert float(window["s_samples"].mean()) == pytest.approx(window.attrs["s_tuned"], rel=1e-9)
+    for kind in ("chords", "pores"):
+        other = xr.load_dataset(out / "descriptors" / f"planes_phi0.3_{kind}.nc")
+        assert other.attrs["estimator"] == "window" and other.attrs["margin"] == window.attrs["margin"]
+    assert set(table["quantity"]) >= {"F_sv (Poisson planes, exact)", "F_ss (Poisson planes, exact)"}
     for name in ("media", "s2", "surface", "pores", "chords"):
         assert (out / "figures" / f"{name}.pdf").stat().st_size > 0
         assert (out / "figures" / f"{name}.png").stat().st_size > 0

@@ -441,7 +441,7 @@ def _sphere2019_checks(section: dict, config: dict) -> list[str]:
 def _debye3d_checks(section: dict, config: dict) -> list[str]:
     """debye3d: every distance range inside half the periodic image (or window), and the
     Poisson-plane sample count 0 or >= 2 (a standard error needs two)."""
-    from randmedia.studies.debye3d import systems
+    from randmedia.studies.debye3d import systems, window_margin
 
     problems = []
     media = section["media"]
@@ -463,6 +463,13 @@ def _debye3d_checks(section: dict, config: dict) -> list[str]:
             problems.append(
                 f"config key 'debye3d.interface.r_max_over_length': F_sv, F_ss of {name} out to "
                 f"{r_max:g} voxels must be < N/2 = {params['N'] / 2:g}")
+        if params["kind"] == "planes":
+            interior = params["N"] - 2 * window_margin(section["interface"]) / section["interface"]["supersample"]
+            if r_max >= interior / 2:
+                problems.append(
+                    f"config key 'debye3d.interface.r_max_over_length' (or 'sigma_bracket'): F_sv, F_ss of "
+                    f"window system {name} out to {r_max:g} voxels must be < half the window's interior, "
+                    f"{interior / 2:g} voxels (N minus the filter margin of the bracket's upper sigma per face)")
     return problems
 
 

@@ -128,7 +128,9 @@ def _by_kind(paths, kind="yt"):
 
 def surface(inputs, settings, log):
     """F_sv(r) a and F_ss(r) a^2 of the constructions against the conjectures Eqs. (44)-(45)
-    (dashed), and the overlapping spheres' F_sv / s, F_ss / s^2 against exact (validation).
+    (dashed), the Poisson-plane windows of the same phi2 (open markers) with their exact
+    functions (dotted, :mod:`randmedia.theory.poisson_planes`), and the overlapping spheres'
+    F_sv / s, F_ss / s^2 against exact (validation).
 
     Parameters
     ----------
@@ -143,7 +145,7 @@ def surface(inputs, settings, log):
     -------
     matplotlib.figure.Figure
     """
-    from randmedia.theory import overlapping
+    from randmedia.theory import overlapping, poisson_planes
     from randmedia.theory.debye_formulas import debye_surface_surface, debye_surface_void
 
     yt, spheres = _by_kind(inputs["descriptors"])
@@ -169,6 +171,9 @@ def surface(inputs, settings, log):
                          color=colour)
             axes[1].plot(rp[kept] / a, a * a * other["F_ss"].values[kept], "o", ms=2, mfc="none", mew=0.4,
                          color=colour)
+            axes[0].plot(fine / a, a * poisson_planes.surface_void(fine, phi2, a, dim=3), ":", lw=0.8, color=colour)
+            axes[1].plot(fine / a, a * a * poisson_planes.surface_surface(fine, phi2, a, dim=3), ":", lw=0.8,
+                         color=colour)
     for ds in spheres:
         radius, phi2 = float(ds.attrs["length_scale"]), float(ds.attrs["phi2"])
         s_exact = float(ds.attrs["s_exact"])
@@ -183,7 +188,7 @@ def surface(inputs, settings, log):
         axes[2].plot(fine / radius, overlapping.surface_surface(fine, radius, phi2, dim=3) / s_exact**2,
                      "k-", lw=0.7)
         axes[2].set_ylim(0, 3)
-    axes[0].set_ylabel(r"$a F_{sv}(r)$ (dashed: Eq. 44; open: Poisson planes)")
+    axes[0].set_ylabel(r"$a F_{sv}(r)$ (dashed: Eq. 44; open, dotted: planes)")
     axes[1].set_ylabel(r"$a^2 F_{ss}(r)$ (dashed: Eq. 45)")
     axes[1].set_yscale("log")
     axes[2].set_ylabel("overlapping spheres (lines: exact)")
