@@ -38,8 +38,11 @@ Validated on the exact case that needs no digitization argument: Poisson-plane
 tessellations with independently coloured cells have L(z) = phi1 e^(-phi2 z / a) and
 p(z) = (phi2 / a) e^(-phi2 z / a) exactly (planes cross a line as a Poisson process of rate
 1/a; a void run ends at a crossing into a solid cell, probability phi2) -- the exponential
-forms conjectured for Debye random media in Sec. VII -- and on overlapping spheres read as a
-window (tests/test_window_chords.py, docs/debye3d.md).
+forms conjectured for Debye random media in Sec. VII --, on the exact runs of such a
+continuum tessellation along the lines of :func:`window_lines` (the estimators alone, no
+digitization: unbiased with no margin; paired with the level set on the same lines, the
+digitization's short-chord excess), and on overlapping spheres read as a window
+(tests/test_window_chords.py, docs/debye3d.md).
 """
 
 from __future__ import annotations
@@ -88,6 +91,53 @@ def _perpendicular_basis(direction: np.ndarray) -> tuple[np.ndarray, np.ndarray]
     return u, np.cross(direction, u)
 
 
+class WindowLines(NamedTuple):
+    """Lines through the interior box of a window (:func:`window_lines`), in the coordinates of
+    the level set's sub-voxel grid (a point x there is x / supersample in voxels)."""
+
+    starts: np.ndarray  # (n, 3) entry points (x, y, z) on the interior box
+    directions: np.ndarray  # (n, 3) unit vectors
+    n_steps: np.ndarray  # (n,) walking steps of length fine_step inside the box
+    fine_step: float  # step (sub-voxels)
+
+    @property
+    def lengths(self) -> np.ndarray:
+        """Walked length T_i of every line (sub-voxels)."""
+        return self.n_steps * self.fine_step
+
+
+def window_lines(field_shape: tuple[int, int, int], margin: int, rng: np.random.Generator, *,
+                 n_directions: int, lines_per_direction: int, fine_step: float) -> WindowLines:
+    """The lines of :func:`sample_window_chords` (module docstring, step 2) through the interior
+    box ``margin`` <= x <= side - ``margin`` of a field of shape (nz, ny, nx): directions
+    :func:`randmedia.describe.chords.sphere_line_directions` (one rotation drawn from ``rng``),
+    then per direction ``lines_per_direction`` foot points uniform on the square of side the
+    box diagonal perpendicular to it (two uniforms per try, redrawn until the line crosses the
+    box for at least one step)."""
+    shape_xyz = np.array(tuple(field_shape)[::-1], dtype=float)  # (x, y, z) extents in sub-voxels
+    low, high = np.full(3, float(margin)), shape_xyz - margin
+    if np.any(high - low <= 0):
+        raise ValueError(f"margin {margin} sub-voxels leaves no interior in {tuple(field_shape)}")
+    centre, half_diagonal = 0.5 * (low + high), 0.5 * float(np.linalg.norm(high - low))
+    starts, directions, n_steps = [], [], []
+    for direction in sphere_line_directions(n_directions, rng):
+        direction = np.asarray(direction, dtype=float)
+        u, v = _perpendicular_basis(direction)
+        for _ in range(lines_per_direction):
+            while True:
+                a, b = (2.0 * rng.random(2) - 1.0) * half_diagonal
+                foot = centre + a * u + b * v
+                t_in, t_out = box_chord(foot, direction, low, high)
+                steps = int((t_out - t_in) / fine_step)
+                if steps >= 1:
+                    break
+            starts.append(foot + t_in * direction)
+            directions.append(direction)
+            n_steps.append(steps)
+    return WindowLines(np.array(starts), np.array(directions), np.array(n_steps, dtype=np.int64),
+                       float(fine_step))
+
+
 def sample_window_chords(image: np.ndarray, phase: int, rng: np.random.Generator, *, sigma: float,
                          supersample: int, margin: int | None = None, n_directions: int = 32,
                          lines_per_direction: int = 8, step: float = 0.1):
@@ -128,41 +178,24 @@ def sample_window_chords(image: np.ndarray, phase: int, rng: np.random.Generator
     field, threshold = level_set.fine, level_set.threshold
     if margin is None:
         margin = default_margin(sigma, supersample)
-    shape_xyz = np.array(field.shape[::-1], dtype=float)  # (x, y, z) extents in sub-voxels
-    low, high = np.full(3, float(margin)), shape_xyz - margin
-    if np.any(high - low <= 0):
-        raise ValueError(f"margin {margin} sub-voxels leaves no interior in {field.shape}")
-    centre, half_diagonal = 0.5 * (low + high), 0.5 * float(np.linalg.norm(high - low))
-    fine_step = step * supersample
-    most_steps = int(2 * half_diagonal / fine_step) + 1
+    lines = window_lines(field.shape, margin, rng, n_directions=n_directions,
+                         lines_per_direction=lines_per_direction, fine_step=step * supersample)
+    most_steps = int(lines.n_steps.max())
     buffer_runs = np.empty(most_steps // 2 + 2)
     buffer_complete = np.empty(most_steps // 2 + 2, dtype=np.bool_)
-    runs, flags, run_lengths, line_lengths = [], [], [], []
+    runs, flags, run_lengths = [], [], []
     ends = 0
-    for direction in sphere_line_directions(n_directions, rng):
-        direction = np.asarray(direction, dtype=float)
-        u, v = _perpendicular_basis(direction)
-        for _ in range(lines_per_direction):
-            while True:
-                a, b = (2.0 * rng.random(2) - 1.0) * half_diagonal
-                foot = centre + a * u + b * v
-                t_in, t_out = box_chord(foot, direction, low, high)
-                n_steps = int((t_out - t_in) / fine_step)
-                if n_steps >= 1:
-                    break
-            start = foot + t_in * direction
-            count = _walk3(field, threshold, float(start[0]), float(start[1]), float(start[2]),
-                           float(direction[0]), float(direction[1]), float(direction[2]),
-                           n_steps, fine_step, buffer_runs, buffer_complete)
-            end = start + n_steps * fine_step * direction
-            ends += count - int(_inside3(field, threshold, float(end[0]), float(end[1]), float(end[2])))
-            length = n_steps * fine_step / supersample
-            runs.append(buffer_runs[:count] / supersample)
-            flags.append(buffer_complete[:count].copy())
-            run_lengths.append(np.full(count, length))
-            line_lengths.append(length)
+    for start, direction, n_steps in zip(lines.starts, lines.directions, lines.n_steps):
+        count = _walk3(field, threshold, float(start[0]), float(start[1]), float(start[2]),
+                       float(direction[0]), float(direction[1]), float(direction[2]),
+                       int(n_steps), lines.fine_step, buffer_runs, buffer_complete)
+        end = start + n_steps * lines.fine_step * direction
+        ends += count - int(_inside3(field, threshold, float(end[0]), float(end[1]), float(end[2])))
+        runs.append(buffer_runs[:count] / supersample)
+        flags.append(buffer_complete[:count].copy())
+        run_lengths.append(np.full(count, n_steps * lines.fine_step / supersample))
     return WindowRuns(np.concatenate(runs), np.concatenate(flags), np.concatenate(run_lengths),
-                      np.array(line_lengths), ends)
+                      lines.lengths / supersample, ends)
 
 
 def window_chord_density(sampled: WindowRuns, edges: np.ndarray) -> tuple[np.ndarray, float]:
