@@ -101,34 +101,6 @@ def _inside(field, threshold, x, y):
 
 
 @njit(cache=True)
-def _walk(field, threshold, x0, y0, dx, dy, n_steps, step, runs, complete):
-    """Phase runs along one line; returns how many were written to runs/complete."""
-    count = 0
-    start = 0.0
-    inside = _inside(field, threshold, x0, y0)
-    starts_at_interface = False
-    for k in range(1, n_steps + 1):
-        x = x0 + k * step * dx
-        y = y0 + k * step * dy
-        now = _inside(field, threshold, x, y)
-        if now != inside:
-            boundary = (k - 0.5) * step
-            if inside:
-                runs[count] = boundary - start
-                complete[count] = starts_at_interface
-                count += 1
-            else:
-                start = boundary
-                starts_at_interface = True
-            inside = now
-    if inside:  # run cut by the end of the line
-        runs[count] = n_steps * step - start
-        complete[count] = False
-        count += 1
-    return count
-
-
-@njit(cache=True)
 def _inside3(field, threshold, x, y, z):
     """Trilinear interpolation of the 3D ``field`` (values at voxel centres (j+1/2, i+1/2,
     k+1/2), axes (z, y, x), periodic) at the point (x, y, z) voxels, > threshold."""
@@ -156,33 +128,49 @@ def _inside3(field, threshold, x, y, z):
 
 
 @njit(cache=True)
-def _walk3(field, threshold, x0, y0, z0, dx, dy, dz, n_steps, step, runs, complete):
-    """Phase runs along one line of a 3D field (the run logic of :func:`_walk`); returns how
-    many were written to runs/complete."""
+def _record_runs(inside, step, runs, complete):
+    """The runs of True in ``inside`` (the phase test at the points 0, step, ..., n_steps step
+    of a line), phase changes placed midway between points: run lengths into ``runs``,
+    ``complete`` where the run starts and ends on the interface; returns how many."""
+    n_steps = inside.size - 1
     count = 0
     start = 0.0
-    inside = _inside3(field, threshold, x0, y0, z0)
     starts_at_interface = False
     for k in range(1, n_steps + 1):
-        x = x0 + k * step * dx
-        y = y0 + k * step * dy
-        z = z0 + k * step * dz
-        now = _inside3(field, threshold, x, y, z)
-        if now != inside:
+        if inside[k] != inside[k - 1]:
             boundary = (k - 0.5) * step
-            if inside:
+            if inside[k - 1]:
                 runs[count] = boundary - start
                 complete[count] = starts_at_interface
                 count += 1
             else:
                 start = boundary
                 starts_at_interface = True
-            inside = now
-    if inside:  # run cut by the end of the line
+    if inside[n_steps]:  # run cut by the end of the line
         runs[count] = n_steps * step - start
         complete[count] = False
         count += 1
     return count
+
+
+@njit(cache=True)
+def _walk(field, threshold, x0, y0, dx, dy, n_steps, step, runs, complete):
+    """Phase runs along one line of a 2D field (:func:`_record_runs`); returns how many were
+    written to runs/complete."""
+    inside = np.empty(n_steps + 1, dtype=np.bool_)
+    for k in range(n_steps + 1):
+        inside[k] = _inside(field, threshold, x0 + k * step * dx, y0 + k * step * dy)
+    return _record_runs(inside, step, runs, complete)
+
+
+@njit(cache=True)
+def _walk3(field, threshold, x0, y0, z0, dx, dy, dz, n_steps, step, runs, complete):
+    """Phase runs along one line of a 3D field (:func:`_record_runs`); returns how many were
+    written to runs/complete."""
+    inside = np.empty(n_steps + 1, dtype=np.bool_)
+    for k in range(n_steps + 1):
+        inside[k] = _inside3(field, threshold, x0 + k * step * dx, y0 + k * step * dy, z0 + k * step * dz)
+    return _record_runs(inside, step, runs, complete)
 
 
 #: golden angle, radians: azimuth increment of the spherical Fibonacci set
