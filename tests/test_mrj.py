@@ -17,7 +17,7 @@ import pytest
 
 from randmedia.describe import bond_order, jamming
 from randmedia.generate import inflation, mrj
-from randmedia.generate.jammed import packing_dataset, packing_fraction
+from randmedia.generate.jammed import ConstructionError, packing_dataset, packing_fraction
 from randmedia.generate.lubachevsky_stillinger import LSParameters
 from randmedia.io import read_dataset, write_dataset
 from randmedia.periodic import Cell, pairs_within
@@ -167,6 +167,32 @@ def test_unconverged_inflation_hands_over_to_the_polish():
     assert packing.construction_attrs()["inflation_stop"] == "max_lps"
     analysis = jamming.analyse(packing.positions, packing.box, packing.diameter)
     assert analysis.jammed and analysis.isostatic_excess == 0
+
+
+def test_a_packing_whose_polish_creeps_is_made_again_from_the_next_seed(packing, monkeypatch, tmp_path):
+    """make_packing_retrying: the first seed's polish fails (ConstructionError, as at max_lps),
+    the next seed's packing is returned with its attempt index, each attempt with its own
+    checkpoint file; when every seed fails the last error is raised."""
+    real = mrj.make_packing
+    calls = []
+
+    def creeping_first(seed, n, protocol, *, checkpoint=None, **options):
+        calls.append((seed, checkpoint))
+        if seed == 11:
+            raise ConstructionError("TJ did not converge within max_lps = 500 LPs")
+        return real(seed, n, protocol, checkpoint=checkpoint, **options)
+
+    monkeypatch.setattr(mrj, "make_packing", creeping_first)
+    checkpoint = tmp_path / ".sample8.checkpoint.npz"
+    made, attempt = mrj.make_packing_retrying([11, 3], 120, QUICK, checkpoint=checkpoint)
+    assert attempt == 1
+    np.testing.assert_array_equal(made.positions, packing.positions)  # seed 3's packing
+    assert [c for _, c in calls] == [checkpoint, tmp_path / ".sample8.checkpoint.attempt1.npz"]
+    with pytest.raises(ConstructionError, match="max_lps"):
+        mrj.make_packing_retrying([11, 11], 120, QUICK)
+    with pytest.raises(ValueError, match="at least one seed"):
+        mrj.make_packing_retrying([], 120, QUICK)
+    assert mrj.attempt_checkpoint(None, 2) is None
 
 
 def test_protocol_from_config_names_bad_keys():

@@ -7,21 +7,24 @@ from pathlib import Path
 
 from randmedia.describe import bond_order, jamming
 from randmedia.generate.jammed import packing_dataset
-from randmedia.generate.mrj import MRJProtocol, make_packing
+from randmedia.generate.mrj import MAX_ATTEMPTS, MRJProtocol, make_packing_retrying
 from randmedia.io import write_dataset
 from randmedia.seeding import sample_seed
 
 params = dict(snakemake.params.items())
 system = snakemake.wildcards.system
 index = int(snakemake.wildcards.k)
-seed = sample_seed(params["seed"], "mrj2016", system, index)
+# the sample's seed, then redraws for a packing whose polish creeps past max_lps (make_packing_retrying)
+seeds = [sample_seed(params["seed"], "mrj2016", system if j == 0 else f"{system} attempt {j}", index)
+         for j in range(MAX_ATTEMPTS)]
 output = Path(snakemake.output[0])
 
 protocol = MRJProtocol.from_config(params)
-packing = make_packing(seed, params["n_particles"], protocol,
-                       checkpoint=output.with_name(f".{output.stem}.checkpoint.npz"),
-                       checkpoint_seconds=params["checkpoint_seconds"], log=log)  # one HiGHS
+packing, attempt = make_packing_retrying(seeds, params["n_particles"], protocol,
+                                         checkpoint=output.with_name(f".{output.stem}.checkpoint.npz"),
+                                         checkpoint_seconds=params["checkpoint_seconds"], log=log)  # one HiGHS
 # thread: the LP solutions, hence the packings, are then the same whatever the core count
+seed = seeds[attempt]
 analysis = jamming.analyse(packing.positions, packing.box, packing.diameter, **params["contacts"])
 cutoff = params["bond_order_cutoff"] * packing.diameter
 q6 = bond_order.global_q6(packing.positions, packing.box, cutoff, diameter=packing.diameter)
@@ -34,6 +37,6 @@ log.info("phi = %.6f, %d LPs, %.1f s; backbone %d spheres, %d contacts (isostati
          analysis.jammed, q6, crystal)
 dataset = packing_dataset(packing, analysis, {
     "system": system, "sample": index, "Q6": q6, "crystal_fraction": crystal,
-    "bond_order_cutoff": cutoff})
+    "bond_order_cutoff": cutoff, "attempt": attempt})
 write_dataset(dataset, output, rule=snakemake.rule, seed=seed,
               config={**params, "system": system, "sample": index})

@@ -24,8 +24,9 @@ for path in snakemake.input.samples:
                                             float(dataset.attrs["diameter"]), first_rung=1, **contacts)
     log.info("%s: jammed at gap tolerance %g: %d; certified from %g", path,
              contacts["gap_tolerance"], dataset.attrs["jammed"], certified)
+    # attempt: which seed made it (0 = the sample's own; packings made before redraws existed lack it)
     records.append({"file": str(path), **{key: dataset.attrs[key] for key in PACKING_ATTRS},
-                    "certified_gap_tolerance": certified})
+                    "attempt": int(dataset.attrs.get("attempt", 0)), "certified_gap_tolerance": certified})
 table = summary_table(records)
 for _, row in table[table["sample"].isin(["mean", "sem"])].iterrows():
     log.info("%s %s: phi %.5f, z %.4f, rattlers %.4f, Q6 %.4f", row["system"], row["sample"],
