@@ -228,10 +228,10 @@ MAX_ATTEMPTS = 3
 def attempt_checkpoint(checkpoint: str | os.PathLike | None, attempt: int) -> Path | None:
     """Checkpoint file of attempt ``attempt``: ``checkpoint`` itself for the first, then
     ``.name.attempt{j}.npz`` beside it (so a redraw never resumes a discarded attempt)."""
-    if checkpoint is None or attempt == 0:
-        return None if checkpoint is None else Path(checkpoint)
+    if checkpoint is None:
+        return None
     path = Path(checkpoint)
-    return path.with_name(f"{path.stem}.attempt{attempt}{path.suffix}")
+    return path if attempt == 0 else path.with_name(f"{path.stem}.attempt{attempt}{path.suffix}")
 
 
 def make_packing_retrying(seeds: Sequence[int], n: int, protocol: MRJProtocol = MRJProtocol(), *,
@@ -239,7 +239,7 @@ def make_packing_retrying(seeds: Sequence[int], n: int, protocol: MRJProtocol = 
                           **options) -> tuple[MRJPacking, int]:
     """:func:`make_packing` from ``seeds[0]``; a packing whose polish does not converge within
     ``protocol.polish.max_lps`` (it keeps sliding: the volume still falls, in bursts, after
-    hundreds of TJ LPs -- one of the first eleven N = 2000 packings, docs/mrj2016.md) is
+    hundreds of TJ LPs -- one of the ten paper-config N = 2000 starts, docs/mrj2016.md) is
     discarded and the sample made again from the next seed. An ensemble of packings that jam
     is what the paper analyses; discarding the rare creeping start is the usual practice of
     packing generators (the discarded fraction is a selection the log and
