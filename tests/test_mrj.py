@@ -172,13 +172,17 @@ def test_unconverged_inflation_hands_over_to_the_polish():
 def test_a_packing_whose_polish_creeps_is_made_again_from_the_next_seed(packing, monkeypatch, tmp_path):
     """make_packing_retrying: the first seed's polish fails (ConstructionError, as at max_lps),
     the next seed's packing is returned with its attempt index, each attempt with its own
-    checkpoint file; when every seed fails the last error is raised."""
+    checkpoint file, removed once a later attempt made the packing; when every seed fails the
+    last error is raised."""
     real = mrj.make_packing
     calls = []
 
     def creeping_first(seed, n, protocol, *, checkpoint=None, **options):
         calls.append((seed, checkpoint))
         if seed == 11:
+            if checkpoint is not None:  # as a real attempt leaves them at max_lps
+                checkpoint.write_bytes(b"inflation")
+                checkpoint.with_name(checkpoint.stem + ".polish.npz").write_bytes(b"polish")
             raise ConstructionError("TJ did not converge within max_lps = 500 LPs")
         return real(seed, n, protocol, checkpoint=checkpoint, **options)
 
@@ -188,6 +192,7 @@ def test_a_packing_whose_polish_creeps_is_made_again_from_the_next_seed(packing,
     assert attempt == 1
     np.testing.assert_array_equal(made.positions, packing.positions)  # seed 3's packing
     assert [c for _, c in calls] == [checkpoint, tmp_path / ".sample8.checkpoint.attempt1.npz"]
+    assert sorted(tmp_path.iterdir()) == []  # the discarded attempt's checkpoints are gone
     with pytest.raises(ConstructionError, match="max_lps"):
         mrj.make_packing_retrying([11, 11], 120, QUICK)
     with pytest.raises(ValueError, match="at least one seed"):

@@ -203,8 +203,7 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
              f" (still inflating: last sqrt(Gamma) - 1 = {history['inflation'][-1]:.3g}, phi = "
              f"{history['phi'][-1]:.7f}); the polish takes over")
     run.save(arrays)  # a kill in the polish resumes after the inflation
-    polish_checkpoint = None if checkpoint is None else \
-        Path(checkpoint).with_name(Path(checkpoint).stem + ".polish.npz")
+    polish_checkpoint = _polish_checkpoint(checkpoint)
     packing = jam(positions, box, protocol.polish, checkpoint=polish_checkpoint,
                   checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds,
                   threads=threads)
@@ -234,6 +233,12 @@ def attempt_checkpoint(checkpoint: str | os.PathLike | None, attempt: int) -> Pa
     return path if attempt == 0 else path.with_name(f"{path.stem}.attempt{attempt}{path.suffix}")
 
 
+def _polish_checkpoint(checkpoint: str | os.PathLike | None) -> Path | None:
+    """Checkpoint file of the polish stage beside ``checkpoint`` (that of the compression and
+    inflation stages)."""
+    return None if checkpoint is None else Path(checkpoint).with_name(Path(checkpoint).stem + ".polish.npz")
+
+
 def make_packing_retrying(seeds: Sequence[int], n: int, protocol: MRJProtocol = MRJProtocol(), *,
                           checkpoint: str | os.PathLike | None = None, log: logging.Logger | None = None,
                           **options) -> tuple[MRJPacking, int]:
@@ -244,8 +249,10 @@ def make_packing_retrying(seeds: Sequence[int], n: int, protocol: MRJProtocol = 
     is what the paper analyses; discarding the rare creeping start is the usual practice of
     packing generators (the discarded fraction is a selection the log and
     ``packings.csv``'s attempt column make visible). Each attempt checkpoints to its own file
-    (:func:`attempt_checkpoint`), so a killed run resumes the attempt it was in; every
-    attempt is deterministic, hence so is the result.
+    (:func:`attempt_checkpoint`), so a killed run resumes the attempt it was in (a discarded
+    attempt fails again at once from its checkpoint); once a packing is made, the checkpoints
+    of the discarded attempts are removed. Every attempt is deterministic, hence so is the
+    result.
 
     Returns
     -------
@@ -270,6 +277,11 @@ def make_packing_retrying(seeds: Sequence[int], n: int, protocol: MRJProtocol = 
             log.warning("attempt %d (seed %d) discarded: %s; the sample is made again from the next seed",
                         attempt, seed, error)
             continue
+        for discarded in range(attempt):
+            for path in (attempt_checkpoint(checkpoint, discarded),
+                         _polish_checkpoint(attempt_checkpoint(checkpoint, discarded))):
+                if path is not None:
+                    path.unlink(missing_ok=True)
         return packing, attempt
     raise AssertionError("unreachable")
 
