@@ -182,7 +182,7 @@ def test_a_packing_whose_polish_creeps_is_made_again_from_the_next_seed(packing,
         if seed == 11:
             if checkpoint is not None:  # as a real attempt leaves them at max_lps
                 checkpoint.write_bytes(b"inflation")
-                checkpoint.with_name(checkpoint.stem + ".polish.npz").write_bytes(b"polish")
+                mrj._polish_checkpoint(checkpoint).write_bytes(b"polish")
             raise ConstructionError("TJ did not converge within max_lps = 500 LPs")
         return real(seed, n, protocol, checkpoint=checkpoint, **options)
 

@@ -277,10 +277,10 @@ def make_packing_retrying(seeds: Sequence[int], n: int, protocol: MRJProtocol = 
             log.warning("attempt %d (seed %d) discarded: %s; the sample is made again from the next seed",
                         attempt, seed, error)
             continue
-        for discarded in range(attempt):
-            for path in (attempt_checkpoint(checkpoint, discarded),
-                         _polish_checkpoint(attempt_checkpoint(checkpoint, discarded))):
-                if path is not None:
+        if checkpoint is not None:
+            for discarded in range(attempt):
+                stages = attempt_checkpoint(checkpoint, discarded)
+                for path in (stages, _polish_checkpoint(stages)):
                     path.unlink(missing_ok=True)
         return packing, attempt
     raise AssertionError("unreachable")
