@@ -21,9 +21,16 @@ so that other load disturbs the ratios less than wall time would):
    <= 4 GB), with c_swap scaled by the stencil size and c_trial by the bins, the accepted
    swaps per voxel as measured;
 4. (``--direct``) the 128^3, a = 4, l_c = 32 construction itself (20-40 min), in a child.
+5. (``--scaling``, ~30 min) the cost against N (a = 3, l_c = 24: N = 64, 80, 96) and against
+   l_c (N = 96: l_c = 16, 24, 32 with a = l_c / 8), whole constructions in children: CPU
+   time, accepted swaps per voxel, the fitted cost per count increment and per trial, peak
+   RSS; then the model CPU = trials c_trial + accepted c_swap, with accepted swaps per voxel
+   and c_swap per stencil voxel taken from the largest run, extrapolated to 128^3 (a = 4,
+   l_c = 32: compared with the workflow's measured constructions), 256^3 (a = 5, l_c = 40:
+   the issue's goal, <= 3 h) and 500^3 (the paper's 2D size, their ~10^5 h).
 
 Usage: python benchmarks/debye3d_yt.py [--side 32] [--measure 64] [--phi2 0.5] [--direct]
-                                       [--skip-scan] [--skip-2d]
+                                       [--scaling] [--skip-scan] [--skip-2d]
 """
 
 from __future__ import annotations
@@ -106,6 +113,7 @@ def main():
     parser.add_argument("--measure", type=int, default=64, help="N of part 3 (0: skip)")
     parser.add_argument("--measure-lc", type=float, default=24.0)
     parser.add_argument("--direct", action="store_true", help="part 4: 128^3, a = 4, l_c = 32")
+    parser.add_argument("--scaling", action="store_true", help="part 5: cost against N and l_c")
     parser.add_argument("--skip-scan", action="store_true")
     parser.add_argument("--skip-2d", action="store_true")
     args = parser.parse_args()
@@ -174,6 +182,44 @@ def main():
         print(f"4. 128^3, a=4, l_c=32, phi2={phi2}: {run['wall'] / 60:.1f} min wall, {run['cpu'] / 60:.1f} min CPU, "
               f"Delta S2 {run['delta_s2']:.2e}, {run['accepted']} accepted swaps, peak RSS "
               f"{run['peak_rss_mb']:.0f} MB")
+
+    if args.scaling:
+        scaling(phi2)
+
+
+def scaling(phi2, seed=11):
+    """Part 5 (see the module docstring)."""
+    grid = [(64, 3.0, 24.0), (80, 3.0, 24.0), (96, 3.0, 24.0), (96, 2.0, 16.0), (96, 4.0, 32.0)]
+    print(f"5. cost against N and l_c, phi2={phi2}, default schedule, one seed, CPU of one core:")
+    print("       N    a   l_c  stencil  CPU s  accepted/voxel  trials/voxel  ns/increment  us/trial"
+          "  Delta S2  peak MB")
+    rows = []
+    for n, a, cutoff in grid:
+        run = child_run(n, a, cutoff, phi2, seed)
+        c_trial, c_swap = fit_costs(run["per_stage"])
+        stencil = stencil_voxels((n, n, n), cutoff)
+        rows.append(dict(n=n, a=a, lc=cutoff, stencil=stencil, run=run, c_trial=c_trial,
+                         ns_per_increment=c_swap / (2 * stencil) * 1e9))
+        print(f"    {n:4d} {a:4g} {cutoff:5g} {stencil:8d} {run['cpu']:6.1f}  "
+              f"{run['accepted'] / n**3:14.3f}  {run['trials'] / n**3:12.1f}  "
+              f"{rows[-1]['ns_per_increment']:12.2f}  {c_trial * 1e6:8.2f}  {run['delta_s2']:8.1e}  "
+              f"{run['peak_rss_mb']:7.0f}")
+    largest = rows[2]
+    per_voxel_accepted = largest["run"]["accepted"] / largest["n"] ** 3
+    per_voxel_trials = largest["run"]["trials"] / largest["n"] ** 3
+    ns = largest["ns_per_increment"] * 1e-9
+    print(f"   model from N = {largest['n']}, l_c = {largest['lc']:g}: {per_voxel_accepted:.3f} accepted "
+          f"swaps and {per_voxel_trials:.0f} trials per voxel, {ns * 1e9:.2f} ns per count increment "
+          f"(2 x stencil per swap), {largest['c_trial'] * 1e6:.2f} us per trial x l_c / {largest['lc']:g}")
+    for n, a, cutoff, note in [(128, 4.0, 32.0, "the workflow's constructions (must <= 30 min)"),
+                               (256, 5.0, 40.0, "the goal (<= 3 h, <= 12 GB)"),
+                               (500, 5.0, 40.0, "the paper's 2D size; their estimate ~1e5 h")]:
+        geometry = _Geometry((n, n, n), cutoff)
+        stencil = geometry.stencil.offsets.shape[0]
+        seconds = n**3 * (per_voxel_accepted * 2 * stencil * ns
+                          + per_voxel_trials * largest["c_trial"] * cutoff / largest["lc"])
+        print(f"   {n}^3, a={a:g}, l_c={cutoff:g} (stencil {stencil}): {seconds / 3600:.2f} h CPU predicted, "
+              f"shell counts {geometry.stencil.counts_bytes() / 2**30:.2f} GiB -- {note}")
 
 
 if __name__ == "__main__":
