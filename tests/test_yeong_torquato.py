@@ -127,6 +127,12 @@ def test_construction_interrupted_in_a_long_range_stage_resumes_to_the_same_imag
     resumed = build(seed=6, side=61, cutoff=8.0, schedule=schedule, checkpoint=checkpoint, log=log)
     np.testing.assert_array_equal(resumed.image, whole.image)
     assert not checkpoint.exists()
+    # the stats count the whole construction, the part before the interruption included
+    for name in ("trials", "accepted", "stages", "long_range_stages", "long_range_accepted"):
+        assert resumed.stats[name] == whole.stats[name], name
+    assert resumed.stats["long_range_accepted"] > 0
+    assert len(resumed.stats["per_stage"]) < len(whole.stats["per_stage"])  # this process's stages
+    assert resumed.stats["cpu_seconds"] > 0
 
 
 @pytest.mark.parametrize("side, cutoff", [(SIDE, CUTOFF), (60, 9.0), (20, 8.0)],

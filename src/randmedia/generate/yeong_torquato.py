@@ -698,9 +698,16 @@ def construct(
     key = _checkpoint_key(phi2, shape, cutoff, target, schedule, rng, scan)
     run = ResumableRun(checkpoint, key, log, rng=rng, checkpoint_seconds=checkpoint_seconds, log_seconds=0.0)
     resumed = run.resume(functools.partial(_restore, n_voxels=n_pixels))
+    # the stats count the whole construction, the parts before a resume included
+    accepted_total = long_range_accepted = 0
     if resumed is not None:
-        stage, long_range_done, image = resumed
+        stage, long_range_done, image, accepted_before = resumed
         log.info("resumed from %s at stage %d (+ %d long-range stages)", checkpoint, stage, long_range_done)
+        if accepted_before is None:
+            log.warning("%s predates the saved swap counts: 'accepted' counts only the swaps "
+                        "after this resume", checkpoint)
+        else:
+            accepted_total, long_range_accepted = accepted_before
     else:
         stage, long_range_done = 0, 0
         image = np.zeros(n_pixels, dtype=np.uint8)
@@ -710,17 +717,18 @@ def construct(
              geometry.describe(), schedule.n_stages, trials_per_stage)
     h = geometry.shell_counts(image, scan)
     diff = geometry.s2(image, None if scan else h)[1:] - target[1:]
-    trials_done = accepted_total = 0
+    trials_done = (stage + long_range_done) * trials_per_stage
     last_stage = schedule.n_stages + schedule.max_extra_stages
     delta_s2 = float(np.mean(np.abs(diff)))
     stage_batch = batch
     # one line per stage (the driver's log_seconds = 0)
     progress = run.progress(schedule.n_stages * trials_per_stage, f"YT {name}", "trials",
                             done=min(stage, schedule.n_stages) * trials_per_stage)
-    per_stage = []  # this run's stages: trials, accepted, wall and CPU seconds, Delta S2
+    per_stage = []  # this process's stages: trials, accepted, wall and CPU seconds, Delta S2
 
     def saved() -> dict:
-        return {"stage": stage, "long_range_done": long_range_done, "image": image}
+        return {"stage": stage, "long_range_done": long_range_done, "image": image,
+                "accepted": accepted_total, "long_range_accepted": long_range_accepted}
 
     def annealed() -> bool:
         # (resumed in a long-range stage: done)
@@ -748,7 +756,6 @@ def construct(
 
     run.loop(anneal_stage, annealed, saved)
 
-    long_range_accepted = 0
     if long_range_done < schedule.long_range_stages and (delta_s2 <= schedule.tolerance
                                                          or long_range_done > 0):
         h = None  # (frees the shell counts before the long-range table is built)
@@ -775,17 +782,17 @@ def construct(
                      far.cutoff, float(np.mean(np.abs(far_diff))))
 
         run.loop(long_range_stage, lambda: long_range_done >= schedule.long_range_stages, saved)
-        accepted_total += long_range_accepted
         far_h = None
+    accepted_total += long_range_accepted  # (saved apart: the checkpoints hold both counts)
     h = None  # (frees the shell counts before the FFT)
 
     # final S2 from the FFT estimator: independent of the incremental bookkeeping
     s2_tracked = geometry.binning.average(periodic_autocorrelation(image.reshape(shape)))
     delta_s2 = float(np.mean(np.abs(s2_tracked[1:] - target[1:])))
-    seconds = run.run_seconds
     stats = {"trials": trials_done, "accepted": accepted_total, "stages": stage,
              "long_range_stages": long_range_done, "long_range_accepted": long_range_accepted,
-             "seconds": seconds, "schedule": asdict(schedule), "per_stage": per_stage}
+             "seconds": run.seconds, "cpu_seconds": run.cpu_seconds, "schedule": asdict(schedule),
+             "per_stage": per_stage}
     if delta_s2 > schedule.tolerance:
         raise ConstructionError(
             f"construction did not converge: Delta S2 = {delta_s2:.3g} > tolerance "
@@ -834,9 +841,13 @@ def _checkpoint_key(phi2, shape, cutoff, target, schedule, rng, scan) -> str:
 
 
 def _restore(data: dict, n_voxels: int):
-    """(stage, long-range stages done, image) from a checkpoint's arrays; ValueError if the
-    image is not one of ``n_voxels`` uint8 voxels (the key names the shape: a bug guard)."""
+    """(stage, long-range stages done, image, (accepted swaps, of which long-range) or None
+    for a checkpoint written before the counts were saved) from a checkpoint's arrays;
+    ValueError if the image is not one of ``n_voxels`` uint8 voxels (the key names the
+    shape: a bug guard)."""
     stage, long_range_done, image = int(data["stage"]), int(data["long_range_done"]), data["image"]
     if image.shape != (n_voxels,) or image.dtype != np.uint8:
         raise ValueError(f"an image of {image.dtype} {image.shape}, not {n_voxels} voxels")
-    return stage, long_range_done, image
+    accepted = ((int(data["accepted"]), int(data["long_range_accepted"]))
+                if "accepted" in data else None)
+    return stage, long_range_done, image, accepted

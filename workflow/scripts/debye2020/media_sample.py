@@ -28,6 +28,7 @@ dataset = phase_image_dataset(result.image, {
     "phi2": phi2, "a": params["a"], "lc": params["lc"], "L": params["L"], "sample": index,
     "delta_S2": result.delta_s2, "trials": result.stats["trials"],
     "accepted": result.stats["accepted"], "construction_seconds": result.stats["seconds"],
+    "construction_cpu_seconds": result.stats["cpu_seconds"],
 })
 write_dataset(dataset, output, rule=snakemake.rule, seed=seed,
               config={**params, "sample": index})

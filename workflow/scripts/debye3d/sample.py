@@ -35,7 +35,8 @@ if kind == "yt":
     image = result.image
     attrs.update({"a": params["a"], "lc": params["lc"], "delta_S2": result.delta_s2,
                   "trials": stats["trials"], "accepted": stats["accepted"],
-                  "construction_seconds": stats["seconds"]})
+                  "construction_seconds": stats["seconds"],
+                  "construction_cpu_seconds": stats["cpu_seconds"]})
 elif kind == "planes":
     from randmedia.generate.poisson_planes import poisson_plane_image
 
