@@ -9,6 +9,7 @@ conjectures Eqs. 44-45), ``pores`` (F(delta)), ``chords`` (L(z), p(z) against ex
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.ticker import NullFormatter
 import xarray as xr
 
 from randmedia.generate.voxel_images import VOXEL_IMAGE
@@ -188,10 +189,16 @@ def surface(inputs, settings, log):
         axes[2].plot(fine / radius, overlapping.surface_surface(fine, radius, phi2, dim=3) / s_exact**2,
                      "k-", lw=0.7)
         axes[2].set_ylim(0, 3)
-    axes[0].set_ylabel(r"$a F_{sv}(r)$ (dashed: Eq. 44; open, dotted: planes)")
-    axes[1].set_ylabel(r"$a^2 F_{ss}(r)$ (dashed: Eq. 45)")
+    # long descriptions as panel titles: y-labels this long overlapped the next panel
+    axes[0].set_ylabel(r"$a F_{sv}(r)$")
+    axes[0].set_title("dashed: Eq. 44; open, dotted: planes", fontsize=6)
+    axes[1].set_ylabel(r"$a^2 F_{ss}(r)$")
+    axes[1].set_title("dashed: Eq. 45; open, dotted: planes", fontsize=6)
     axes[1].set_yscale("log")
-    axes[2].set_ylabel("overlapping spheres (lines: exact)")
+    axes[1].yaxis.set_minor_formatter(NullFormatter())
+    axes[2].set_ylabel("overlapping spheres")
+    axes[2].set_title("lines: exact", fontsize=6)
+    fig.subplots_adjust(wspace=0.4)  # room for the middle and right panels' y-labels
     for ax, label in zip(axes, ("r / a", "r / a", "r / R")):
         ax.set_xlabel(label)
         if ax.has_data():
@@ -238,7 +245,8 @@ def pores(inputs, settings, log):
         axes[1].plot(delta / radius, overlapping.pore_size_complementary_cdf(delta, radius, phi2, dim=3),
                      "k-", lw=0.7, label="exact")
     axes[0].set_xlabel(r"$\delta / a$")
-    axes[0].set_ylabel(r"$F(\delta)$ (dashed: Poisson planes)")
+    axes[0].set_ylabel(r"$F(\delta)$")
+    axes[0].set_title("dashed: Poisson planes", fontsize=6)
     axes[1].set_xlabel(r"$\delta / R$")
     axes[1].set_ylabel(r"$F(\delta)$, overlapping spheres")
     for ax in axes:
@@ -295,16 +303,20 @@ def chords(inputs, settings, log):
                          label="ours")
         axes[2].plot(z / radius, overlapping.lineal_path_void(z, radius, phi2, dim=3), "k-", lw=0.7,
                      label="exact")
-    axes[0].set_ylabel("L(z) (dashed: exponential; open: Poisson planes)")
+    axes[0].set_ylabel("L(z)")
+    axes[0].set_title("dashed: exponential; open: Poisson planes", fontsize=6)
     axes[1].set_ylabel("a p(z)")
-    axes[2].set_ylabel("L(z), overlapping spheres")
+    axes[1].set_title("dashed: exponential; open: Poisson planes", fontsize=6)
+    axes[2].set_ylabel("L(z), spheres")
     for ax, label in zip(axes, ("z / a", "z / a", "z / R")):
         ax.set_xlabel(label)
         ax.set_yscale("log")
+        ax.yaxis.set_minor_formatter(NullFormatter())
         if ax.has_data():
             ax.legend(fontsize=5)
     axes[0].set_ylim(1e-3, 1)
     axes[1].set_ylim(1e-3, 1)
+    fig.subplots_adjust(wspace=0.4)  # room for the middle and right panels' y-labels
     return fig
 
 
