@@ -29,8 +29,12 @@ rule mrj2016_jammed_packing:
         system="mrj|mrj_large",
     params:
         n_particles=lambda wildcards: MRJ_JAMMED[wildcards.system]["n_particles"],
-        compression=MRJ_JAMMED["compression"],
-        inflation=MRJ_JAMMED["inflation"],
+        # only the stages of the configured route, so a change of the other route's
+        # constants reruns nothing
+        route=MRJ_JAMMED["route"],
+        compression=MRJ_JAMMED["compression"] if MRJ_JAMMED["route"] == "compression" else {},
+        inflation=MRJ_JAMMED["inflation"] if MRJ_JAMMED["route"] == "compression" else {},
+        dilute=MRJ_JAMMED["dilute"] if MRJ_JAMMED["route"] == "dilute" else {},
         polish=MRJ_JAMMED["polish"],
         contacts=MRJ_JAMMED["contacts"],
         bond_order_cutoff=MRJ_JAMMED["bond_order_cutoff"],

@@ -76,8 +76,8 @@ class InflationParameters:
     switch_inflation: float = 1.0e-5
     tolerance: float = 1.0e-10
     stall_lps: int = 5
-    max_lps: int = 1000
-    backend: str = "highs-ipm"
+    max_lps: int = 200
+    backend: str = "highs-hipo"
 
     def __post_init__(self):
         checks = {
@@ -118,7 +118,7 @@ def cutoff_for(bound: float, dim: int, diameter: float = 1.0) -> float:
 
 
 def inflation_step(positions: np.ndarray, box: np.ndarray, bound: float, *,
-                   diameter: float = 1.0, backend: str = "highs-ipm", threads: int = 1):
+                   diameter: float = 1.0, backend: str = "highs-hipo", threads: int = 1):
     """One iLP step (module docstring) with displacement bound ``bound``.
 
     Returns (positions, box, record): the moved packing rescaled so that its closest pair
@@ -135,7 +135,7 @@ def inflation_step(positions: np.ndarray, box: np.ndarray, bound: float, *,
     diameter : float, optional
         Sphere diameter D (default 1).
     backend : str, optional
-        LP solver backend of :func:`randmedia.generate.packing_lp.solve` (default "highs-ipm").
+        LP solver backend of :func:`randmedia.generate.packing_lp.solve` (default "highs-hipo").
     threads : int, optional
         Solver threads (default 1).
 
@@ -172,7 +172,7 @@ def inflation_step(positions: np.ndarray, box: np.ndarray, bound: float, *,
     except packing_lp.LPError:
         # s = 0, Gamma = (closest distance / D)^2 is feasible: a solver failure, not an
         # infeasible LP; the dual simplex decides
-        solution = packing_lp.solve(cost, matrix, rhs, lower, upper, backend="highs-simplex",
+        solution = packing_lp.solve(cost, matrix, rhs, lower, upper, backend=packing_lp.fallback(backend),
                                     threads=threads, sense="max")
     moves = solution.x[:-1].reshape(n, dim)
     gamma = float(solution.x[-1])

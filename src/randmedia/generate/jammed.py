@@ -100,9 +100,20 @@ class TJParameters:
     translation_fraction: float = 1.0
     tolerance: float = 1e-12
     max_lps: int = 20000
-    backend: str = "highs-ipm"
+    backend: str = "highs-hipo"
     #: shrink the influence sphere with the trust factor (module docstring)
     shrink_with_trust: bool = False
+    #: > 0: the translation bound is this fraction of D times the cell's linear size relative
+    #: to the start, (V / V_0)^(1/d), instead of the reach formula -- the TJ code's bound
+    #: ``trans_max``, which limits lattice coordinates (sdatkinson/TJ, test3d/parameters_3d.txt)
+    translation_max: float = 0.0
+    #: judge each step by its realized gain (module docstring); False: accept every step,
+    #: as the TJ code does (its overlaps are removed by the rescaling alone)
+    trust_region: bool = True
+    #: > 0: also converged when the cell volume changed by at most this fraction of the
+    #: *start* volume over two LPs (the TJ code's ``term_tol``, an absolute volume in units of
+    #: its unit start cell)
+    volume_tolerance_start: float = 0.0
 
     def __post_init__(self):
         checks = {
@@ -113,12 +124,16 @@ class TJParameters:
             "tolerance": 0 < self.tolerance < 1e-3,
             "max_lps": int(self.max_lps) == self.max_lps and self.max_lps >= 1,
             "backend": self.backend in packing_lp.BACKENDS,
+            "translation_max": 0 <= self.translation_max <= 0.1,
+            "volume_tolerance_start": 0 <= self.volume_tolerance_start < 1e-3,
         }
         refuse_invalid("Torquato-Jiao parameters", checks, self)
 
-    def translation_bound(self, dim: int, diameter: float = 1.0) -> float:
+    def translation_bound(self, dim: int, diameter: float = 1.0, cell_scale: float = 1.0) -> float:
         """Delta: the largest per-component displacement that keeps pairs beyond the
-        influence sphere apart in one step, times ``translation_fraction``."""
+        influence sphere apart in one step, times ``translation_fraction``; with
+        ``translation_max`` > 0 that fixed bound times ``cell_scale`` = (V / V_0)^(1/d)
+        instead, refused if it exceeds the reach (then unlisted pairs could collide)."""
         norm = self.max_normal_strain + (dim - 1) * self.max_shear_strain
         if norm >= 1:
             raise ValueError("strain bounds too large: e_n + (d - 1) e_s must be < 1")
@@ -127,7 +142,14 @@ class TJParameters:
             raise ValueError(
                 f"influence_gap {self.influence_gap} too small for the strain bounds "
                 f"(need (1 + delta)(1 - e_n - (d-1) e_s) > 1)")
-        return self.translation_fraction * reach / (2 * math.sqrt(dim))
+        largest = reach / (2 * math.sqrt(dim))
+        if self.translation_max > 0:
+            fixed = self.translation_max * diameter * cell_scale
+            if fixed > largest:
+                raise ValueError(f"translation_max {self.translation_max} D exceeds the reach "
+                                 f"{largest:.4g} D of the influence sphere and strain bounds")
+            return self.translation_fraction * fixed
+        return self.translation_fraction * largest
 
 
 @dataclass
@@ -296,7 +318,7 @@ def remove_overlaps(positions: np.ndarray, box: np.ndarray, diameter: float):
 
 
 def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diameter: float = 1.0,
-            threads: int = 1, trust: float = 1.0):
+            threads: int = 1, trust: float = 1.0, start_volume: float | None = None):
     """One LP of the TJ construction (steps 1-4 of the module docstring), with the
     translation and strain bounds multiplied by ``trust`` (<= 1).
 
@@ -318,6 +340,9 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     trust : float, optional
         Trust factor in (0, 1] (default 1); with ``params.shrink_with_trust`` it scales the
         influence gap and strain bounds instead.
+    start_volume : float, optional
+        Cell volume V_0 at the start of the construction: scales ``params.translation_max``
+        by (V / V_0)^(1/d) (default: the current volume, scale 1).
 
     Returns
     -------
@@ -347,7 +372,9 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     ns = packing_lp.n_strain(dim)
     cost = np.zeros(ns + dim * n)
     cost[:dim] = 1.0
-    delta = params.translation_bound(dim, diameter)
+    volume = abs(np.linalg.det(box))
+    scale = (volume / start_volume) ** (1.0 / dim) if start_volume else 1.0
+    delta = params.translation_bound(dim, diameter, scale)
     upper = np.full(ns + dim * n, delta * trust)
     upper[:dim] = params.max_normal_strain * trust
     upper[dim:ns] = params.max_shear_strain * trust
@@ -363,7 +390,7 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     except packing_lp.LPError:
         # x = 0 is feasible, so this is a numerical failure of the solver (seen with IPX at
         # tiny trust factors): the dual simplex decides
-        solution = packing_lp.solve(cost, matrix, bound, -upper, upper, backend="highs-simplex",
+        solution = packing_lp.solve(cost, matrix, bound, -upper, upper, backend=packing_lp.fallback(params.backend),
                                     threads=threads)
     deformation = np.eye(dim) + packing_lp.strain_matrix(solution.x[:ns], dim)
     moved = (positions + solution.x[ns:].reshape(n, dim)) @ deformation.T
@@ -462,6 +489,7 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     if closest < diameter * (1 - 1e-12):
         raise ValueError(f"the start packing overlaps: closest centre distance {closest:.6g} < D = "
                          f"{diameter:g}")
+    start_volume = abs(np.linalg.det(box))
     run = ResumableRun(checkpoint, _checkpoint_key(positions, box, params, diameter), log,
                        checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
     state = run.resume(_restore)
@@ -483,6 +511,11 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         accepted = [phi for phi, ok in zip(history["phi"], history["accepted"]) if ok]
         if len(accepted) >= 3 and abs(accepted[-1] - accepted[-3]) <= params.tolerance * accepted[-1]:
             return True
+        if params.volume_tolerance_start > 0 and len(accepted) >= 3:
+            # |V_t - V_(t-2)| / V_0 with V = n v_1 / phi and V_0 = start_volume
+            spheres = n * ball_volume(dim, diameter)
+            if abs(spheres / accepted[-1] - spheres / accepted[-3]) <= params.volume_tolerance_start * start_volume:
+                return True
         if trust < MIN_TRUST:
             log.info("trust factor below %g: no LP step raises phi any more", MIN_TRUST)
             return True
@@ -497,7 +530,8 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     def step() -> None:
         nonlocal positions, box, trust, jammed
         phi_old = packing_fraction(positions, box, diameter)
-        new_positions, new_box, record = tj_step(positions, box, params, diameter, threads, trust)
+        new_positions, new_box, record = tj_step(positions, box, params, diameter, threads, trust,
+                                                 start_volume)
         phi_new = packing_fraction(new_positions, new_box, diameter)
         if -record["trace"] <= params.tolerance and trust == 1.0:
             # the LP with the full bounds cannot lower the volume: jammed (TJ's criterion)
@@ -509,7 +543,7 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
             jammed = True
             return
         ok, next_trust = _next_trust(trust, -record["trace"], math.log(phi_new / phi_old),
-                                     params.tolerance)
+                                     params.tolerance) if params.trust_region else (True, 1.0)
         if ok:
             positions, box = new_positions, new_box
         record.update(phi=phi_new if ok else phi_old, trust=trust, accepted=int(ok),

@@ -43,10 +43,11 @@ from pathlib import Path
 import numpy as np
 
 from randmedia.checkpoint import checkpoint_key
-from randmedia.generate import inflation
+from randmedia.generate import inflation, packing_lp
 from randmedia.generate.jammed import (ConstructionError, JammedPacking, TJParameters, jam,
                                        packing_fraction, validate_packing_input)
 from randmedia.generate.lubachevsky_stillinger import LSParameters, compress
+from randmedia.generate.rsa import ball_volume, random_sequential_addition
 from randmedia.resumable import ResumableRun
 
 #: per-LP keys of the inflation stage kept in the packing's history
@@ -54,23 +55,77 @@ INFLATION_HISTORY = ("phi",) + inflation.STEP_RECORD_KEYS
 
 
 @dataclass(frozen=True)
+class DiluteTJ:
+    """The paper's route: Torquato-Jiao LPs from a dilute random start, with the constants
+    of the public TJ code of Atkinson, Stillinger & Torquato, PRE 88, 062208 (2013)
+    (sdatkinson/TJ, ``test3d/parameters_3d.txt``): start at ``initial_phi`` (random
+    sequential addition, as dilute as the code's example start), influence sphere
+    ``influence_gap`` D beyond contact, translation bound ``translation_max`` D in lattice
+    coordinates (Cartesian: times the cell's linear size relative to the start), every step
+    accepted and its overlaps removed by rescaling (no trust region), stop when the cell
+    volume changed by at most ``volume_tolerance`` of the start volume over two LPs.
+
+    Strain bounds: the code multiplies every length-like constant by the diameter of its
+    unit-cell start, the strain bounds ``comp_max`` = ``shear_max`` = 0.1 included, so its
+    strain bound is ``strain_max`` D / L_0 = 0.1 (phi_0 / (n v_1))^(1/d) -- 0.0073, 0.0046 and
+    0.0027 for n = 500, 2000 and 10 000 at phi_0 = 0.1 (:meth:`tj_parameters`).
+    """
+
+    initial_phi: float = 0.1
+    influence_gap: float = 0.2
+    translation_max: float = 0.01
+    strain_max: float = 0.1
+    volume_tolerance: float = 1e-8
+    max_lps: int = 5000
+    backend: str = "highs-hipo"
+
+    def tj_parameters(self, n: int, dim: int = 3, diameter: float = 1.0) -> TJParameters:
+        """The :class:`TJParameters` of the route for ``n`` spheres (class docstring)."""
+        start_side = (n * ball_volume(dim, diameter) / self.initial_phi) ** (1.0 / dim)
+        strain = self.strain_max * diameter / start_side
+        return TJParameters(influence_gap=self.influence_gap, max_normal_strain=strain,
+                            max_shear_strain=strain, translation_max=self.translation_max,
+                            trust_region=False, volume_tolerance_start=self.volume_tolerance,
+                            tolerance=1e-10, max_lps=self.max_lps, backend=self.backend)
+
+
+#: the routes to a packing: "compression" (LS, inflation LPs, polish; module docstring) and
+#: "dilute" (:class:`DiluteTJ`, then the same polish)
+ROUTES = ("compression", "dilute")
+
+
+@dataclass(frozen=True)
 class MRJProtocol:
-    """The three stages of the module docstring and their constants."""
+    """The stages of the module docstring (``route`` "compression") or of the paper's route
+    (``route`` "dilute": :class:`DiluteTJ`, then the polish) and their constants."""
 
     compression: LSParameters = field(default_factory=LSParameters)
     inflation: inflation.InflationParameters = field(default_factory=inflation.InflationParameters)
     polish: TJParameters = field(default_factory=lambda: TJParameters(
         influence_gap=0.1, max_normal_strain=3e-3, max_shear_strain=3e-3, tolerance=1e-10,
         max_lps=500, shrink_with_trust=True))
+    route: str = "compression"
+    dilute: DiluteTJ = field(default_factory=DiluteTJ)
+
+    def __post_init__(self):
+        if self.route not in ROUTES:
+            raise ValueError(f"MRJ route must be one of {ROUTES}, got {self.route!r}")
 
     @classmethod
     def from_config(cls, section: dict) -> "MRJProtocol":
-        """From the config keys ``compression``, ``inflation`` and ``polish``."""
-        return cls(LSParameters(**section["compression"]),
-                   inflation.InflationParameters(**section["inflation"]),
-                   TJParameters(**section["polish"], shrink_with_trust=True))
+        """From the config keys ``route``, ``compression``, ``inflation``, ``dilute`` and ``polish``."""
+        return cls(LSParameters(**section.get("compression", {})),
+                   inflation.InflationParameters(**section.get("inflation", {})),
+                   TJParameters(**section["polish"], shrink_with_trust=True),
+                   route=section.get("route", "compression"),
+                   dilute=DiluteTJ(**section.get("dilute", {})))
 
     def as_dict(self) -> dict:
+        """The constants of the stages the route runs (the route itself only for "dilute", so
+        the compression route's checkpoints and attributes stay as they were)."""
+        if self.route == "dilute":
+            return {"route": {"name": self.route}, "dilute": asdict(self.dilute),
+                    "polish": asdict(self.polish)}
         return {"compression": asdict(self.compression), "inflation": asdict(self.inflation),
                 "polish": asdict(self.polish)}
 
@@ -84,6 +139,9 @@ class MRJPacking(JammedPacking):
     n_inflation_lp: int = 0
     #: why the inflation stage ended (:func:`randmedia.generate.inflation.stop_reason`)
     inflation_stop: str = ""
+    #: per-LP record of the dilute TJ stage (route "dilute"; jammed.jam's history keys)
+    dilute_history: dict = field(default_factory=dict)
+    n_dilute_lp: int = 0
 
     def construction_attrs(self) -> dict:
         attrs = {f"{stage}_{k}": v for stage, values in self.params.as_dict().items()
@@ -91,19 +149,26 @@ class MRJPacking(JammedPacking):
         attrs.update({f"compression_final_{k}": v for k, v in self.compression.items()})
         attrs["n_inflation_lp"] = self.n_inflation_lp
         attrs["inflation_stop"] = self.inflation_stop
-        attrs["n_polish_lp"] = self.n_lp - self.n_inflation_lp
+        attrs["n_polish_lp"] = self.n_lp - self.n_inflation_lp - self.n_dilute_lp
+        if self.params.route == "dilute":
+            attrs["n_dilute_lp"] = self.n_dilute_lp
         return attrs
 
     def lp_history(self) -> dict:
+        """Per-LP record of all stages in order: stage 0 = inflation, 2 = dilute TJ,
+        1 = the TJ polish."""
         polish = super().lp_history()
-        h = self.inflation_history
-        m = len(h.get("phi", []))
-        return {"stage": np.r_[np.zeros(m, dtype=np.int8), polish["stage"]],
-                "phi": np.r_[np.asarray(h.get("phi", []), dtype=float), polish["phi"]],
+        h, t = self.inflation_history, self.dilute_history
+        m, k = len(h.get("phi", [])), len(t.get("phi", []))
+        return {"stage": np.r_[np.zeros(m, dtype=np.int8), np.full(k, 2, dtype=np.int8), polish["stage"]],
+                "phi": np.r_[np.asarray(h.get("phi", []), dtype=float),
+                             np.asarray(t.get("phi", []), dtype=float), polish["phi"]],
                 "predicted": np.r_[self.positions.shape[1] * np.asarray(h.get("inflation", []), dtype=float),
-                                   polish["predicted"]],
-                "rows": np.r_[np.asarray(h.get("rows", []), dtype=np.int64), polish["rows"]],
+                                   -np.asarray(t.get("trace", []), dtype=float), polish["predicted"]],
+                "rows": np.r_[np.asarray(h.get("rows", []), dtype=np.int64),
+                              np.asarray(t.get("rows", []), dtype=np.int64), polish["rows"]],
                 "solve_seconds": np.r_[np.asarray(h.get("solve_seconds", []), dtype=float),
+                                       np.asarray(t.get("seconds", []), dtype=float),
                                        polish["solve_seconds"]]}
 
 
@@ -151,6 +216,12 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
     """
     log = log or logging.getLogger(__name__)
     validate_packing_input(n, 0.5, dim)
+    packing_lp.check_backends(protocol.polish.backend,
+                              protocol.dilute.backend if protocol.route == "dilute" else protocol.inflation.backend)
+    if protocol.route == "dilute":
+        return _make_packing_dilute(seed, n, protocol, dim=dim, checkpoint=checkpoint,
+                                    checkpoint_seconds=checkpoint_seconds, log=log,
+                                    log_seconds=log_seconds, threads=threads)
     params = protocol.inflation
     run = ResumableRun(checkpoint, _key(seed, n, dim, protocol), log,
                        checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
@@ -218,6 +289,51 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
                       history=packing.history, params=protocol, compression=compression,
                       inflation_history={k: np.asarray(v) for k, v in history.items()},
                       n_inflation_lp=n_inflation, inflation_stop=reason)
+
+
+def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, checkpoint,
+                         checkpoint_seconds: float, log: logging.Logger, log_seconds: float,
+                         threads: int) -> MRJPacking:
+    """Route "dilute" of :func:`make_packing`: random sequential addition at
+    ``protocol.dilute.initial_phi`` from ``seed``, TJ LPs with the constants of
+    :class:`DiluteTJ`, then the polish (the same as the compression route's), which certifies
+    the packing strictly jammed at the LP's precision. A checkpoint is saved after the dilute
+    stage, so a kill in the polish does not repeat it."""
+    run = ResumableRun(checkpoint, _key(seed, n, dim, protocol), log,
+                       checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
+    state = run.resume(lambda data: (data["positions"], data["box"],
+                                     {k[len("history_"):]: v for k, v in data.items() if k.startswith("history_")}))
+    if state is not None:
+        positions, box, history = state
+        log.info("resumed from %s after the dilute TJ stage (%d LPs)", checkpoint, len(history["phi"]))
+    else:
+        start, start_box = random_sequential_addition(np.random.default_rng(seed), n,
+                                                      protocol.dilute.initial_phi, dim)
+        stage_checkpoint = None if checkpoint is None else \
+            Path(checkpoint).with_name(Path(checkpoint).stem + ".dilute.npz")
+        stage = jam(start, start_box, protocol.dilute.tj_parameters(n, dim), checkpoint=stage_checkpoint,
+                    checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds,
+                    threads=threads)
+        positions, box, history = stage.positions, stage.box, stage.history
+        log.info("dilute TJ stage: phi = %.6f after %d LPs (%.1f s CPU)", stage.phi, stage.n_lp,
+                 stage.cpu_seconds)
+        run.save({"positions": positions, "box": box,
+                  **{f"history_{k}": np.asarray(v) for k, v in history.items()}})
+    packing = jam(positions, box, protocol.polish, checkpoint=_polish_checkpoint(checkpoint),
+                  checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds,
+                  threads=threads)
+    seconds, cpu_seconds = run.seconds, run.cpu_seconds
+    run.finish()
+    n_dilute = len(history["phi"])
+    log.info("strictly jammed after %d dilute TJ and %d polish LPs in %.1f s (%.1f s CPU): phi = %.6f",
+             n_dilute, packing.n_lp, seconds, cpu_seconds, packing.phi)
+    return MRJPacking(positions=packing.positions, box=packing.box, diameter=1.0,
+                      n_lp=n_dilute + packing.n_lp, seconds=seconds, cpu_seconds=cpu_seconds,
+                      lp_seconds=float(np.sum(history["seconds"])) + packing.lp_seconds,
+                      history=packing.history, params=protocol,
+                      compression={"phi": protocol.dilute.initial_phi},
+                      dilute_history={k: np.asarray(v) for k, v in history.items()},
+                      n_dilute_lp=n_dilute)
 
 
 #: seeds tried per sample by :func:`make_packing_retrying` (the first and two redraws)

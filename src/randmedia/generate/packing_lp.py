@@ -58,13 +58,35 @@ from dataclasses import dataclass
 import numpy as np
 import scipy.sparse as sp
 
-#: LP backends: HiGHS through ``highspy`` -- interior point (IPX) + crossover to a
-#: vertex (``highs-ipm``), interior point alone (``highs-ipx``: a point in the
-#: relative interior of the optimal face, strictly complementary), dual simplex
-#: (``highs-simplex``), the first-order primal-dual method PDLP (``highs-pdlp``: cost
-#: linear in the size, feasible only to ~1e-7) -- and HiGHS' dual simplex through
-#: ``scipy.optimize.linprog``
-BACKENDS = ("highs-ipm", "highs-ipx", "highs-simplex", "highs-pdlp", "scipy")
+#: LP backends: HiGHS through ``highspy`` -- its newer interior point HiPO (``highs-hipo``:
+#: augmented system, METIS ordering, no crossover: a point in the relative interior of the
+#: optimal face; ``highs-hipo-vertex``: with crossover to a vertex), the older interior point
+#: IPX + crossover to a vertex (``highs-ipm``) or alone (``highs-ipx``), dual simplex
+#: (``highs-simplex``), the first-order primal-dual method PDLP (``highs-pdlp``: cost linear in
+#: the size, feasible only to ~1e-7) -- and HiGHS' dual simplex through
+#: ``scipy.optimize.linprog``. HiPO needs BLAS, METIS and AMD from the ``highspy-extras``
+#: wheel of highspy's own version (pinned together in pyproject.toml); where they are
+#: missing, HiGHS refuses the solver and :func:`solve` raises :class:`LPError` naming them.
+BACKENDS = ("highs-hipo", "highs-hipo-vertex", "highs-ipm", "highs-ipx", "highs-simplex",
+            "highs-pdlp", "scipy")
+#: HiGHS options of the HiPO backends: without crossover the solution is a point of the
+#: optimal face's relative interior whose active rows are closed only to the interior point's
+#: tolerances; at HiGHS' defaults (1e-8, 1e-7) the TJ polish then leaves its contacts open
+#: by ~1e-8 D and no packing passes the jamming test at the 1e-9 D contact gap (N = 500,
+#: seed 1: certified only at 1e-6 D); at these it passes as with a vertex (same phi to 4e-11)
+HIPO_OPTIONS: dict = {"ipm_optimality_tolerance": 1e-12, "primal_feasibility_tolerance": 1e-10,
+                      "dual_feasibility_tolerance": 1e-10}
+#: the interior-point backends whose solution is not a vertex (no crossover)
+INTERIOR_BACKENDS = ("highs-hipo", "highs-ipx")
+
+
+def _highspy_version() -> str:
+    from importlib.metadata import PackageNotFoundError, version
+
+    try:
+        return version("highspy")
+    except PackageNotFoundError:  # pragma: no cover - highspy imported from a source tree
+        return "unknown"
 
 
 class LPError(RuntimeError):
@@ -189,6 +211,23 @@ class LPSolution:
     simplex_iterations: int = 0
 
 
+def fallback(backend: str) -> str:
+    """The backend that decides an LP ``backend`` failed to solve although it is feasible (a
+    numerical failure): IPX + crossover after HiPO, the dual simplex after anything else."""
+    return "highs-ipm" if backend.startswith("highs-hipo") else "highs-simplex"
+
+
+def check_backends(*backends: str) -> None:
+    """Refuse, before any work, a backend that is unknown or that this highspy cannot run
+    (HiPO without the matching ``highspy-extras``): one tiny LP per HiPO backend."""
+    for backend in backends:
+        if backend not in BACKENDS:
+            raise ValueError(f"unknown LP backend {backend!r}; expected one of {BACKENDS}")
+        if backend.startswith("highs-hipo"):
+            solve(np.array([1.0]), sp.csr_matrix(np.ones((1, 1))), np.array([1.0]), np.array([0.0]),
+                  np.array([2.0]), backend=backend)
+
+
 def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lower: np.ndarray,
           col_upper: np.ndarray, *, backend: str = "highs-ipm", threads: int = 1,
           sense: str = "min") -> LPSolution:
@@ -244,6 +283,16 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
     if backend in ("highs-ipm", "highs-ipx"):
         highs.setOptionValue("solver", "ipx")
         highs.setOptionValue("run_crossover", "on" if backend == "highs-ipm" else "off")
+    elif backend in ("highs-hipo", "highs-hipo-vertex"):
+        # HiGHS' default hipo_system "choose" picks the normal equations for these LPs, which
+        # the dense column (Gamma, or the strain of TJ) fills: 96-213 s instead of 2.5-4 s per
+        # LP at N = 2000 (docs/mrj2016.md, "LP solver")
+        highs.setOptionValue("solver", "hipo")
+        highs.setOptionValue("hipo_system", "augmented")
+        highs.setOptionValue("hipo_ordering", "metis")
+        highs.setOptionValue("run_crossover", "on" if backend == "highs-hipo-vertex" else "off")
+        for name, value in HIPO_OPTIONS.items():
+            highs.setOptionValue(name, value)
     elif backend == "highs-pdlp":
         highs.setOptionValue("solver", "pdlp")
     else:
@@ -263,10 +312,16 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
     lp.a_matrix_.index_ = csc.indices
     lp.a_matrix_.value_ = csc.data
     highs.passModel(lp)
-    highs.run()
+    run_status = highs.run()
     status = highs.getModelStatus()
     if status != highspy.HighsModelStatus.kOptimal:
-        raise LPError(f"LP not solved to optimality: {highs.modelStatusToString(status)}")
+        unavailable = (backend.startswith("highs-hipo") and run_status == highspy.HighsStatus.kError
+                       and status == highspy.HighsModelStatus.kNotset)
+        raise LPError(
+            f"LP backend {backend!r}: HiPO is unavailable in this highspy build (install "
+            f"highspy-extras of highspy's own version, {_highspy_version()}; both are pinned in "
+            f"pyproject.toml)" if unavailable else
+            f"LP not solved to optimality ({backend}): {highs.modelStatusToString(status)}")
     solution = highs.getSolution()
     info = highs.getInfo()
     ipm, crossover = int(info.ipm_iteration_count), int(info.crossover_iteration_count)
