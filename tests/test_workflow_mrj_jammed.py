@@ -78,3 +78,26 @@ def test_packings_table_matches_the_files(jammed_run, section):
         assert row["attempt"] == read_dataset(path).attrs["attempt"]  # which seed made it (0: the first)
         # jammed at the configured tolerance, so certified at the first rung of the ladder
         assert row["certified_gap_tolerance"] == pytest.approx(section["contacts"]["gap_tolerance"])
+
+
+def test_every_packing_is_kept_and_taken_back_instead_of_regenerated(jammed_run, section, tmp_path):
+    """Each packing job keeps a copy beside the record (here the quick config's
+    {results}/record/mrj2016/packings/); a job on a machine without results/ takes it back
+    (same seed and configuration) instead of making the packing again."""
+    from conftest import copy_workflow
+    from randmedia.kept_configurations import kept_path
+
+    keep_dir = f"{QUICK_RESULTS}/record/mrj2016/packings"
+    for system, k, path in packing_files(jammed_run, section):
+        kept = read_dataset(jammed_run / kept_path(keep_dir, system, k))
+        assert kept.identical(read_dataset(path))
+    fresh = copy_workflow(tmp_path / "fresh")
+    target = kept_path(keep_dir, "mrj", 0)
+    (fresh / target).parent.mkdir(parents=True)
+    (fresh / target).write_bytes((jammed_run / target).read_bytes())
+    output = f"{QUICK_RESULTS}/mrj2016/configs/mrj/sample0.nc"
+    result = run_snakemake(fresh, output, "--cores", "1", "--configfile", "config/quick.yaml")
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-5000:]
+    log = (fresh / f"{QUICK_RESULTS}/mrj2016/logs/jammed_mrj_sample0.log").read_text()
+    assert "taken from the kept copy" in log
+    assert read_dataset(fresh / output).identical(read_dataset(jammed_run / output))

@@ -40,6 +40,10 @@ rule mrj2016_jammed_packing:
         bond_order_cutoff=MRJ_JAMMED["bond_order_cutoff"],
         checkpoint_seconds=MRJ_JAMMED["checkpoint_seconds"],
         seed=config["seed"],
+        # every packing is kept beside the record as it finishes and taken back from there
+        # (same seed and configuration) instead of regenerated: record/mrj2016/packings/ for
+        # the paper config, {results_dir}/record/mrj2016/packings/ for any other
+        keep_dir=f"{record_root('mrj2016')}/mrj2016/packings",
     benchmark:
         results_path("mrj2016/benchmarks/jammed_packing_{system}_sample{k}.tsv")
     log:
