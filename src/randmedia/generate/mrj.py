@@ -103,7 +103,7 @@ class MRJProtocol:
     inflation: inflation.InflationParameters = field(default_factory=inflation.InflationParameters)
     polish: TJParameters = field(default_factory=lambda: TJParameters(
         influence_gap=0.1, max_normal_strain=3e-3, max_shear_strain=3e-3, tolerance=1e-10,
-        max_lps=500, shrink_with_trust=True))
+        max_lps=500, shrink_with_trust=True, final_backend="highs-hipo-vertex"))
     route: str = "compression"
     dilute: DiluteTJ = field(default_factory=DiluteTJ)
 
@@ -216,7 +216,7 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
     """
     log = log or logging.getLogger(__name__)
     validate_packing_input(n, 0.5, dim)
-    packing_lp.check_backends(protocol.polish.backend,
+    packing_lp.check_backends(protocol.polish.backend, *([protocol.polish.final_backend] if protocol.polish.final_backend else []),
                               protocol.dilute.backend if protocol.route == "dilute" else protocol.inflation.backend)
     if protocol.route == "dilute":
         return _make_packing_dilute(seed, n, protocol, dim=dim, checkpoint=checkpoint,
