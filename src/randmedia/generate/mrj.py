@@ -103,7 +103,7 @@ class MRJProtocol:
     inflation: inflation.InflationParameters = field(default_factory=inflation.InflationParameters)
     polish: TJParameters = field(default_factory=lambda: TJParameters(
         influence_gap=0.1, max_normal_strain=3e-3, max_shear_strain=3e-3, tolerance=1e-10,
-        max_lps=500, shrink_with_trust=True, final_backend="highs-hipo-vertex"))
+        max_lps=500, shrink_with_trust=True, backend="highs-hipo-vertex"))
     route: str = "compression"
     dilute: DiluteTJ = field(default_factory=DiluteTJ)
 
@@ -299,8 +299,10 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
     :class:`DiluteTJ`, then the polish (the same as the compression route's), which certifies
     the packing strictly jammed at the LP's precision. A checkpoint is saved after the dilute
     stage, so a kill in the polish does not repeat it."""
-    run = ResumableRun(checkpoint, _key(seed, n, dim, protocol), log,
-                       checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
+    # the state saved here is the dilute stage's result: it depends on that stage alone (the
+    # polish resumes from its own checkpoint)
+    key = checkpoint_key(seed=int(seed), n=int(n), dim=int(dim), dilute=asdict(protocol.dilute))
+    run = ResumableRun(checkpoint, key, log, checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
     state = run.resume(lambda data: (data["positions"], data["box"],
                                      {k[len("history_"):]: v for k, v in data.items() if k.startswith("history_")}))
     if state is not None:
