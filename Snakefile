@@ -10,7 +10,12 @@
 
 from pathlib import Path
 
+from snakemake.utils import min_version
+
 from randmedia.config import validate_config
+
+# the Snakemake this workflow is tested with (requirements.lock: 9.27.1)
+min_version("9.27")
 
 
 configfile: "config/config.yaml"

@@ -58,9 +58,9 @@ from randmedia.theory.debye import debye_s2
 n, a, lc, phi2, seed = int(sys.argv[1]), float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4]), int(sys.argv[5])
 target = functools.partial(debye_s2, phi2=phi2, a=a)
 construct(target, phi2, (int(2 * lc) + 3,) * 3, lc, np.random.default_rng(0),
-          AnnealingSchedule(trials_per_pixel=1, n_stages=2, tolerance=1.0))  # compile: same count type
+          AnnealingSchedule(trials_per_pixel=1, n_stages=2, tolerance=1.0, long_range_stages=0))  # compile: same count type
 wall, cpu = time.perf_counter(), time.process_time()
-result = construct(target, phi2, (n, n, n), lc, np.random.default_rng(seed))
+result = construct(target, phi2, (n, n, n), lc, np.random.default_rng(seed), AnnealingSchedule(long_range_stages=0))
 print(json.dumps({"delta_s2": result.delta_s2, "wall": time.perf_counter() - wall,
                   "cpu": time.process_time() - cpu, "trials": result.stats["trials"],
                   "accepted": result.stats["accepted"], "per_stage": result.stats["per_stage"],
@@ -74,10 +74,11 @@ def warm_up(target, phi2, dimension, cutoff, scan=False):
     compiled per type)."""
     small = (int(2 * cutoff) + 3,) * dimension
     construct(target, phi2, small, cutoff, np.random.default_rng(0),
-              AnnealingSchedule(trials_per_pixel=1, n_stages=2, tolerance=1.0), scan=scan)
+              AnnealingSchedule(trials_per_pixel=1, n_stages=2, tolerance=1.0, long_range_stages=0), scan=scan)
 
 
-def timed(shape, phi2, a, cutoff, seed, scan, schedule=AnnealingSchedule()):
+def timed(shape, phi2, a, cutoff, seed, scan, schedule=None):
+    schedule = schedule or AnnealingSchedule(long_range_stages=0)
     target = lambda r: debye_s2(r, phi2, a)  # noqa: E731
     warm_up(target, phi2, len(shape), cutoff, scan)
     tic = time.process_time()

@@ -20,18 +20,24 @@ from __future__ import annotations
 import argparse
 import os
 import time
+from pathlib import Path
 
 os.environ.setdefault("NUMBA_NUM_THREADS", "1")
 
 import numpy as np  # noqa: E402
+import yaml  # noqa: E402
 
 from randmedia.generate.hard_particles.chain import HardParticleChain  # noqa: E402
 from randmedia.generate.hard_particles.geometry import cubic_box  # noqa: E402
 from randmedia.generate.hard_particles.settings import MCSettings  # noqa: E402
 
 
+#: the chain constants of the paper config's hard-sphere liquid (mrj2016.equilibrium.mc)
+_MC = yaml.safe_load((Path(__file__).resolve().parents[1] / "config" / "config.yaml").read_text())["mrj2016"]["equilibrium"]["mc"]
+
+
 def equilibrated_chain(n, phi, dim, seed=0):
-    chain = HardParticleChain(n, cubic_box(n, phi, dim), 1.0, 1, MCSettings(),
+    chain = HardParticleChain(n, cubic_box(n, phi, dim), 1.0, 1, MCSettings(**_MC),
                               np.random.default_rng(seed))
     chain.start()
     chain._run(1)  # compile / load the kernels outside any timing
@@ -43,7 +49,7 @@ def equilibrated_chain(n, phi, dim, seed=0):
 
 def measure(chain, target, sweeps):
     """Tune to ``target`` acceptance, then time ``sweeps`` sweeps at the frozen step."""
-    chain.settings = MCSettings(target_acceptance=target)
+    chain.settings = MCSettings(**{**_MC, "target_acceptance": target})
     for _ in range(20):
         chain._tune(chain._run(10))
     chain._mark()

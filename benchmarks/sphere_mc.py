@@ -42,7 +42,7 @@ def kernel_rate(potential: Potential, radius: float, density: float, sweeps: int
     """Pair evaluations per second of run_fluid (2 (N - 1) per trial move)."""
     thresholds = cos_thresholds(cap_grid(radius, 60), radius)
     schedule = MCSchedule(equilibration_sweeps=max(1, sweeps // 4), production_sweeps=sweeps,
-                          frame_interval=sweeps)
+                          frame_interval=sweeps, count_interval=1)
     run = run_fluid(potential, radius, density, 5.2, schedule, np.random.default_rng(1), thresholds)
     return run.stats["pair_evaluations"] / run.stats["seconds"]
 
@@ -87,7 +87,7 @@ def paper_time(config_path: Path, seconds: float) -> None:
                               frame_interval=min(run["frame_interval"], production),
                               count_interval=min(run["count_interval"], max(1, production // 2)))
         thresholds = cos_thresholds(cap_grid(radius, 60), radius)
-        result = run_fluid(Potential(system["potential"], float(system.get("coupling", 1.0))), radius,
+        result = run_fluid(Potential(system["potential"], float(system["coupling"])), radius,
                            fluids["density"], fluids["temperature"], schedule,
                            np.random.default_rng(3), thresholds)
         done = schedule.equilibration_sweeps + schedule.production_sweeps
@@ -111,7 +111,7 @@ def main():
     args = parser.parse_args()
     radius, density = 15.0, 0.5
     n = particle_number(radius, density)
-    kernel_rate(Potential("lj"), 3.0, density, 20)  # compile outside the timings
+    kernel_rate(Potential("lj", 0.0), 3.0, density, 20)  # compile outside the timings
     print(f"energy change of a move, R = {radius:g}, N = {n} (one core):")
     for name in ("lj", "udd", "uddpar", "udc", "ucc"):
         potential = Potential(name, 1.0)

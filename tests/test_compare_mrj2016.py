@@ -7,6 +7,7 @@ import pytest
 
 from randmedia.compare.mrj2016 import gaussian_radius, rounding_margin
 from randmedia.generate import spheres
+from randmedia.theory.balls import poisson_intensity
 
 
 @pytest.mark.parametrize("text, margin", [("0.4148", 5e-5), ("2.135", 5e-4), ("1", 0.5), ("2.26e-1", 5e-4),
@@ -40,7 +41,7 @@ def test_lattices_of_touching_spheres():
 def test_overlapping_spheres_sample():
     rng = np.random.default_rng(0)
     x, box = spheres.overlapping_spheres(rng, 0.636, 1000)
-    rho = spheres.overlapping_intensity(0.636)
+    rho = poisson_intensity(0.636, 0.5, 3)
     assert rho == pytest.approx(-math.log(1 - 0.636) / (math.pi / 6))
     assert box[0, 0] ** 3 * rho == pytest.approx(1000)
     assert abs(len(x) - 1000) < 5 * math.sqrt(1000)

@@ -12,7 +12,7 @@ from conftest import REPO, assert_comparison_notes
 from randmedia.compare import COLUMNS, NOT_IDENTIFIED, checked_row, compare, comparison_frame, notes_frame
 from randmedia.compare import debye2020, sphere2019
 from randmedia.compare.mrj2016 import Rows
-from randmedia.describe.two_phase import RadialBinning
+from randmedia.numerics.radial import RadialBinning
 from randmedia.theory.overlapping import specific_surface, surface_void
 
 K_SIGMA = 3.0

@@ -5,13 +5,12 @@ import math
 import numpy as np
 import pytest
 
-from randmedia.generate.balls import (digitize_balls, overlapping_ball_centers, overlapping_balls_image,
-                                      poisson_intensity)
+from randmedia.generate.balls import digitize_balls, overlapping_ball_centers, overlapping_balls_image
 from randmedia.generate.disks import overlapping_disks_image
-from randmedia.generate.poisson_planes import (cell_labels, crossing_fraction, plane_area_density,
-                                               poisson_plane_image, poisson_planes, specific_surface)
-from randmedia.theory.debye import debye_specific_surface
-from randmedia.theory.overlapping import unit_ball_volume
+from randmedia.generate.poisson_planes import cell_labels, poisson_plane_image, poisson_planes
+from randmedia.theory.balls import poisson_intensity, unit_ball_volume
+from randmedia.theory.debye_formulas import debye_specific_surface
+from randmedia.theory.plane_process import crossing_fraction, plane_area_density, specific_surface
 
 # ----------------------------------------------------------------------------- Poisson planes
 
@@ -22,10 +21,10 @@ def test_crossing_fraction_and_specific_surface_match_eq7():
     phi2, a = 0.3, 4.0
     # Eq. (7): -S2'(0) = omega_{d-1} / (d omega_d) s, and -S2'(0) = phi1 phi2 / a for Eq. (21)
     for d in (2, 3):
-        s = specific_surface(phi2, a, d)
+        s = specific_surface(a, phi2, d)
         assert s * unit_ball_volume(d - 1) / (d * unit_ball_volume(d)) == pytest.approx(0.7 * 0.3 / a)
-    assert specific_surface(phi2, a, 3) == pytest.approx(4 * 0.7 * 0.3 / a)
-    assert specific_surface(phi2, a, 2) == pytest.approx(debye_specific_surface(phi2, a))
+    assert specific_surface(a, phi2, 3) == pytest.approx(4 * 0.7 * 0.3 / a)
+    assert specific_surface(a, phi2, 2) == pytest.approx(debye_specific_surface(a, phi2))
     assert plane_area_density(a, 3) == pytest.approx(2 / a)  # P_L = S_V / 2
 
 

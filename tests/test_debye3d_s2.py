@@ -10,10 +10,11 @@ import itertools
 import numpy as np
 import pytest
 
-from randmedia.describe.two_phase import RadialBinning, two_point_function
+from randmedia.describe.two_phase import two_point_function
 from randmedia.describe.window import periodic_estimator_expectation, window_binning, window_s2_samples
 from randmedia.generate.balls import overlapping_balls_image
 from randmedia.generate.poisson_planes import poisson_plane_image
+from randmedia.numerics.radial import RadialBinning
 from randmedia.stats import standard_error
 from randmedia.theory.debye import debye_s2
 from randmedia.theory.overlapping import s2_void

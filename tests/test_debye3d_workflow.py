@@ -5,10 +5,10 @@ import pytest
 
 from conftest import SCHEMA, quick_config
 from randmedia.compare.debye3d import DELTA_S2_GOAL, s2_rows
-from randmedia.config import validate_config
+from randmedia.config import debye3d_systems, validate_config
 from randmedia.generate.balls import overlapping_balls_image
 from randmedia.generate.poisson_planes import poisson_plane_image
-from randmedia.studies.debye3d import s2_dataset, systems
+from randmedia.studies.debye3d import s2_dataset
 
 
 @pytest.fixture(scope="module")
@@ -17,14 +17,14 @@ def section():
 
 
 def test_system_table_of_the_quick_config(section):
-    table = systems(section)
+    table = debye3d_systems(section)
     assert sorted(table) == ["planes_phi0.3", "planes_phi0.5", "spheres_phi0.3", "yt_phi0.3", "yt_phi0.5"]
     assert table["yt_phi0.5"]["kind"] == "yt" and table["yt_phi0.5"]["lc"] == 12.0
     assert table["planes_phi0.3"]["n_samples"] == 2 and "lc" not in table["planes_phi0.3"]
     assert table["spheres_phi0.3"]["s2_r_max"] == pytest.approx(4.0 * 3.0)  # r_max_over_length R
     assert table["yt_phi0.3"]["s2_r_max"] == pytest.approx(4.0 * 3.0)  # ... a
     no_planes = {**section, "poisson_planes": {"n_samples": 0}}
-    assert not any(name.startswith("planes") for name in systems(no_planes))
+    assert not any(name.startswith("planes") for name in debye3d_systems(no_planes))
 
 
 def test_sphere_s2_agrees_with_the_exact_one():
@@ -50,12 +50,13 @@ def test_plane_windows_use_the_window_estimator():
 
 
 def test_construction_rows_carry_delta_s2_against_the_goal():
-    from randmedia.generate.yeong_torquato import construct
+    from randmedia.generate.yeong_torquato import AnnealingSchedule, construct
     from randmedia.theory.debye import debye_s2
 
     params = {"kind": "yt", "phi2": 0.3, "a": 1.5, "lc": 6.0, "N": 16, "s2_r_max": 7.0}
     images = np.stack([construct(lambda r: debye_s2(r, 0.3, 1.5), 0.3, (16, 16, 16), 6.0,
-                                 np.random.default_rng(seed)).image for seed in (1, 2)])
+                                 np.random.default_rng(seed), AnnealingSchedule(long_range_stages=0)).image
+                       for seed in (1, 2)])
     s2 = s2_dataset(images, True, params)
     assert s2["delta_S2"].shape == (2,) and (s2["delta_S2"] < DELTA_S2_GOAL).all()
     s2.attrs["system"] = "yt_phi0.3"

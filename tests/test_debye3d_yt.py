@@ -24,7 +24,7 @@ def debye(phi2, a=A):
 
 
 def build(phi2=0.3, seed=1, shape=SHAPE, cutoff=CUTOFF, **kwargs):
-    schedule = kwargs.pop("schedule", AnnealingSchedule())
+    schedule = kwargs.pop("schedule", AnnealingSchedule(long_range_stages=0))
     return construct(debye(phi2), phi2, shape, cutoff, np.random.default_rng(seed), schedule,
                      **kwargs)
 
@@ -55,7 +55,7 @@ def test_three_dimensional_construction_reaches_the_debye_target(phi2):
 def test_three_dimensional_fast_and_scanning_constructions_are_identical():
     """The driver's 3D path with shell counts, batched updates and pending-flip cells
     (3 x 3 x 3 cells) follows the ball scan's trajectory to the same image."""
-    schedule = AnnealingSchedule(trials_per_pixel=10, tolerance=1.0)
+    schedule = AnnealingSchedule(trials_per_pixel=10, tolerance=1.0, long_range_stages=0)
     slow = build(shape=(16, 17, 18), cutoff=5.0, schedule=schedule, scan=True)
     for batch in (7, 4096):
         fast = build(shape=(16, 17, 18), cutoff=5.0, schedule=schedule, batch=batch)
@@ -65,7 +65,7 @@ def test_three_dimensional_fast_and_scanning_constructions_are_identical():
 
 def test_square_image_given_as_a_shape_is_the_same_construction():
     """L and (L, L) are the same 2D construction, bit for bit."""
-    schedule = AnnealingSchedule(trials_per_pixel=10, tolerance=1.0)
+    schedule = AnnealingSchedule(trials_per_pixel=10, tolerance=1.0, long_range_stages=0)
     by_side = construct(debye(0.3), 0.3, 40, 8.0, np.random.default_rng(3), schedule)
     by_shape = construct(debye(0.3), 0.3, (40, 40), 8.0, np.random.default_rng(3), schedule)
     np.testing.assert_array_equal(by_side.image, by_shape.image)
@@ -74,7 +74,8 @@ def test_square_image_given_as_a_shape_is_the_same_construction():
 def test_checkpoint_keys_name_the_dimension():
     """An L x L image keeps the former 2D driver's key (its checkpoints stay valid); a 3D
     (or non-square) image is keyed by its shape, so no two dimensions share a key."""
-    rng, schedule, target = np.random.default_rng(0), AnnealingSchedule(), np.arange(4.0)
+    rng, target = np.random.default_rng(0), np.arange(4.0)
+    schedule = AnnealingSchedule(long_range_stages=0)
     former = checkpoint_key(phi2=0.3, L=N, lc=CUTOFF, schedule=schedule.__dict__, scan=False,
                             target=array_digest(target), rng=rng.bit_generator.state)
     keys = {shape: _checkpoint_key(0.3, shape, CUTOFF, target, schedule, rng, False)
@@ -149,7 +150,7 @@ import numpy as np
 from randmedia.generate.yeong_torquato import AnnealingSchedule, construct
 from randmedia.theory.debye import debye_s2
 logging.basicConfig(level=logging.INFO, stream=sys.stdout)
-schedule = AnnealingSchedule(trials_per_pixel=400)
+schedule = AnnealingSchedule(trials_per_pixel=400, long_range_stages=0)
 result = construct(functools.partial(debye_s2, phi2=0.3, a=2.0), 0.3, (24, 24, 24), 9.0,
                    np.random.default_rng(12), schedule, checkpoint=sys.argv[1],
                    checkpoint_seconds=0.0)
@@ -183,7 +184,8 @@ def _never_called(r):
 ])
 def test_bad_shapes_fail_before_any_work(side, cutoff, message):
     with pytest.raises(ValueError, match=message):
-        construct(_never_called, 0.3, side, cutoff, np.random.default_rng(0))
+        construct(_never_called, 0.3, side, cutoff, np.random.default_rng(0),
+                  AnnealingSchedule(long_range_stages=0))
 
 
 def test_image_shape_of_a_side_or_a_shape():

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from randmedia.describe.two_phase import RadialBinning
 from randmedia.generate.yt_stencil import Stencil, apply_flips, count_dtype, shell_counts
+from randmedia.numerics.radial import RadialBinning
 
 
 def brute_force_counts(image, cutoff):

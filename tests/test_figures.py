@@ -5,6 +5,8 @@ draws and saves what a registry function returns."""
 from __future__ import annotations
 
 import logging
+
+import numpy as np
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -94,3 +96,29 @@ def test_draw_rule_figure_names_a_mismatch(tmp_path):
     with pytest.raises(ValueError, match="alpha_cubed_pdf"):
         rule.draw_rule_figure({1: lambda inputs, settings, log: figure()[0]}, job, log)
     assert not list(tmp_path.glob("*.pdf"))
+
+
+def test_empty_panels_finds_a_panel_with_reference_lines_only():
+    from randmedia.plot.style import empty_panels, figure
+
+    fig, axes = figure(nrows=3, ncols=1)
+    axes[0].axvline(9.0)          # reference lines only: empty
+    axes[0].axhline(0.5)
+    axes[1].plot([0, 1, 2], [1, 2, 3])
+    axes[2].errorbar([0, 1], [1, 2], yerr=[0.1, 0.1], fmt="x")
+    assert empty_panels(fig) == [0]
+    axes[0].plot([0, 1, 2, 3], [np.nan] * 4)  # a curve of NaNs is no data
+    assert empty_panels(fig) == [0]
+
+
+@pytest.mark.workflow
+def test_no_figure_of_the_quick_run_has_an_empty_panel(quick_run):
+    """Every figure job logs the panels that show no data (randmedia.plot.rule); the quick
+    run's figures have none (mrj2016 Fig. 6 draws the N = 2000 MRJ packings when the config
+    has no N = 10 000 ones)."""
+    from conftest import QUICK_RESULTS
+
+    logs = sorted((quick_run / QUICK_RESULTS).glob("*/logs/*fig*.log"))
+    assert logs, "no figure logs found"
+    empty = [line for path in logs for line in path.read_text().splitlines() if "shows no data" in line]
+    assert not empty, "\n".join(empty)

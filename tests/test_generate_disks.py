@@ -5,8 +5,8 @@ import math
 import numpy as np
 import pytest
 
-from randmedia.generate.disks import (digitize_disks, overlapping_disk_centers,
-                                      overlapping_disks_image, poisson_intensity)
+from randmedia.generate.disks import digitize_disks, overlapping_disk_centers, overlapping_disks_image
+from randmedia.theory.balls import poisson_intensity
 
 
 def lattice_points_in_disk(cx, cy, radius, side):
@@ -24,7 +24,7 @@ def test_one_disk_is_exactly_the_pixel_centres_inside_it_periodically(center):
 
 
 def test_intensity_gives_requested_void_fraction():
-    rho = poisson_intensity(0.3, 10.0)
+    rho = poisson_intensity(0.3, 10.0, 2)
     assert math.isclose(math.exp(-rho * math.pi * 100.0), 0.7)
 
 
@@ -38,7 +38,7 @@ def test_realized_volume_fraction_is_unbiased():
 def test_number_of_centres_is_poisson():
     rng = np.random.default_rng(5)
     counts = np.array([len(overlapping_disk_centers(rng, 50.0, 4.0, 0.2)) for _ in range(2000)])
-    expected = poisson_intensity(0.2, 4.0) * 2500.0
+    expected = poisson_intensity(0.2, 4.0, 2) * 2500.0
     assert abs(counts.mean() - expected) < 4 * math.sqrt(expected / counts.size)
     assert abs(counts.var(ddof=1) / counts.mean() - 1.0) < 0.1  # Poisson: variance = mean
 
@@ -46,7 +46,7 @@ def test_number_of_centres_is_poisson():
 @pytest.mark.parametrize("phi2, radius", [(0.0, 1.0), (1.0, 1.0), (0.3, 0.0), (0.3, -2.0)])
 def test_rejects_impossible_parameters(phi2, radius):
     with pytest.raises(ValueError):
-        poisson_intensity(phi2, radius)
+        poisson_intensity(phi2, radius, 2)
 
 
 def test_same_seed_same_image():

@@ -86,7 +86,8 @@ def _brute_force_min_distance(positions, box):
 @pytest.fixture(scope="module")
 def liquid_3d():
     """N = 256 spheres at phi = 0.478 (simple cubic start), 16 samples 0.3 D^2 apart."""
-    settings = MCSettings(equilibration_msd=1.5, sample_msd=0.3, measure_every=2)
+    settings = MCSettings(equilibration_msd=1.5, sample_msd=0.3, measure_every=2, contact_range=0.1,
+                          contact_order=3)
     box = cubic_box(256, 0.478, 3)
     return run_chain(256, box, 1.0, 16, np.random.default_rng(11), settings)
 
@@ -126,7 +127,8 @@ def test_two_disks_sample_the_uniform_measure():
     """Detailed balance: two hard disks on a torus are uniform over the allowed region, so
     their minimum-image distance has density prop. to r on D < r < L/2 (exact)."""
     side = 4.0
-    settings = MCSettings(equilibration_msd=1.0, sample_msd=1.0, block_sweeps=5)
+    settings = MCSettings(equilibration_msd=1.0, sample_msd=1.0, block_sweeps=5, measure_every=5,
+                          contact_range=0.1, contact_order=3)
     result = run_chain(2, [side, side], 1.0, 3000, np.random.default_rng(3), settings)
     r = np.array([np.linalg.norm(_minimum_image(s.positions[1] - s.positions[0], side))
                   for s in result.samples])
@@ -147,7 +149,7 @@ def _minimum_image(d, side):
 def test_low_density_pressure_against_the_exact_virial_series():
     """phi = 0.1 spheres (RSA start): Z within 1 % of the converged virial series."""
     settings = MCSettings(equilibration_msd=1.0, sample_msd=0.5, measure_every=1,
-                             contact_range=0.2)
+                             contact_range=0.2, contact_order=3)
     box = cubic_box(200, 0.1, 3)
     result = run_chain(200, box, 1.0, 60, np.random.default_rng(4), settings, start="rsa")
     assert result.equilibration["start"].startswith("random sequential addition")
@@ -172,7 +174,8 @@ def test_hard_disks_pressure_matches_the_2d_equation_of_state():
 
 def test_rsa_start_with_compression_reaches_the_target():
     box = cubic_box(64, 0.45, 3)
-    settings = MCSettings(equilibration_msd=0.5, sample_msd=0.2)
+    settings = MCSettings(equilibration_msd=0.5, sample_msd=0.2, measure_every=5, contact_range=0.1,
+                          contact_order=3)
     result = run_chain(64, box, 1.0, 2, np.random.default_rng(6), settings, start="rsa")
     assert result.equilibration["compression_sweeps"] > 0
     assert count_overlaps(result.samples[-1].positions, box, 1.0) == 0
@@ -180,7 +183,8 @@ def test_rsa_start_with_compression_reaches_the_target():
 
 def test_same_seed_same_chain_and_resume_after_interruption(tmp_path, monkeypatch):
     box = cubic_box(100, 0.4, 3)
-    settings = MCSettings(equilibration_msd=0.5, sample_msd=0.2)
+    settings = MCSettings(equilibration_msd=0.5, sample_msd=0.2, measure_every=5, contact_range=0.1,
+                          contact_order=3)
     first = run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings)
     second = run_chain(100, box, 1.0, 4, np.random.default_rng(7), settings)
     for a, b in zip(first.samples, second.samples):
@@ -221,6 +225,8 @@ def test_same_seed_same_chain_and_resume_after_interruption(tmp_path, monkeypatc
 ])
 def test_impossible_input_is_refused(args, match):
     with pytest.raises(ValueError, match=match):
-        run_chain(*args, 1, np.random.default_rng(0))
+        run_chain(*args, 1, np.random.default_rng(0),
+                  MCSettings(sample_msd=1.0, measure_every=5, contact_range=0.1, contact_order=3))
     with pytest.raises(ValueError):
-        MCSettings(target_acceptance=1.5)
+        MCSettings(target_acceptance=1.5, sample_msd=1.0, measure_every=5, contact_range=0.1,
+                   contact_order=3)

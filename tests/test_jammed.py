@@ -18,8 +18,9 @@ import pytest
 
 from randmedia.describe import bond_order, jamming
 from randmedia.generate import jammed, packing_lp
-from randmedia.generate.rsa import RSA_SATURATION, ball_volume, random_sequential_addition
+from randmedia.generate.rsa import RSA_SATURATION, random_sequential_addition
 from randmedia.periodic import Cell, pairs_within
+from randmedia.theory.balls import ball_volume
 
 
 def min_gap(positions, box, cutoff=1.2):
@@ -281,4 +282,4 @@ def test_summary_table_means_and_sems():
     sem = table[(table["system"] == "mrj") & (table["sample"] == "sem")].iloc[0]
     assert mean["phi"] == pytest.approx(0.6315)
     assert sem["phi"] == pytest.approx(np.std([0.63, 0.631, 0.632, 0.633], ddof=1) / 2)
-    assert ball_volume(3) == pytest.approx(np.pi / 6)
+    assert ball_volume(0.5, 3) == pytest.approx(np.pi / 6)

@@ -23,7 +23,7 @@ from randmedia.io import read_dataset, write_dataset
 from randmedia.periodic import Cell, pairs_within
 
 QUICK = mrj.MRJProtocol(compression=LSParameters(growth_rate=0.1, slowdown_pressure=80,
-                                                 target_pressure=1e4))
+                                                 target_pressure=1e4), route="compression")
 
 
 def min_gap(positions, box, cutoff=1.2):
@@ -161,7 +161,7 @@ def test_unconverged_inflation_hands_over_to_the_polish():
     """After max_lps inflation LPs the TJ polish takes over; the packing is still strictly
     jammed (the polish's own test) and records why the inflation stage ended."""
     protocol = mrj.MRJProtocol(compression=QUICK.compression,
-                               inflation=inflation.InflationParameters(max_lps=1))
+                               inflation=inflation.InflationParameters(max_lps=1), route="compression")
     packing = mrj.make_packing(5, 120, protocol)
     assert packing.n_inflation_lp == 1 and packing.inflation_stop == "max_lps"
     assert packing.construction_attrs()["inflation_stop"] == "max_lps"
@@ -204,3 +204,53 @@ def test_protocol_from_config_names_bad_keys():
     with pytest.raises(ValueError, match="displacement_bound"):
         mrj.MRJProtocol.from_config({"compression": {}, "polish": {},
                                      "inflation": {"displacement_bound": -1.0}})
+
+
+def test_the_dilute_route_has_the_tj_codes_constants():
+    """DiluteTJ: strain bound 0.1 D / L_0 of the phi_0 = 0.1 start (the TJ code scales comp_max
+    by its start's diameter), translation 0.01 D in lattice coordinates, no trust region, the
+    volume criterion relative to the start volume."""
+    import math
+
+    params = mrj.DiluteTJ().tj_parameters(2000)
+    side = (2000 * math.pi / 6 / 0.1) ** (1 / 3)
+    assert params.max_normal_strain == params.max_shear_strain == pytest.approx(0.1 / side)
+    assert params.max_normal_strain == pytest.approx(0.00457, abs=1e-5)
+    assert params.translation_max == 0.01 and params.influence_gap == 0.2
+    assert not params.trust_region and params.volume_tolerance_start == 1e-8
+    # the translation bound follows the cell's linear size
+    assert params.translation_bound(3, 1.0, 0.5) == pytest.approx(0.005)
+    with pytest.raises(ValueError, match="route"):
+        mrj.MRJProtocol(route="lubachevsky")
+
+
+def test_the_dilute_route_makes_a_strictly_jammed_packing_and_resumes_after_its_first_stage(tmp_path):
+    protocol = mrj.MRJProtocol(route="dilute")
+    packing = mrj.make_packing(2, 100, protocol)
+    assert packing.n_dilute_lp > 50 and packing.n_inflation_lp == 0
+    analysis = jamming.analyse(packing.positions, packing.box, packing.diameter)
+    assert analysis.jammed and analysis.isostatic_excess == 0
+    history = packing.lp_history()
+    assert (history["stage"][:packing.n_dilute_lp] == 2).all() and (history["stage"][packing.n_dilute_lp:] == 1).all()
+    assert packing.construction_attrs()["route_name"] == "dilute"
+    # a kill in the polish: the run resumes after the dilute stage, with the same packing
+    checkpoint = tmp_path / "dilute.npz"
+    calls = {"n": 0}
+    original = mrj.jam
+
+    def jam_killed_in_the_polish(*args, **kwargs):
+        calls["n"] += 1
+        if calls["n"] == 2:
+            raise KeyboardInterrupt
+        return original(*args, **kwargs)
+
+    import unittest.mock as mock
+
+    with mock.patch.object(mrj, "jam", jam_killed_in_the_polish), pytest.raises(KeyboardInterrupt):
+        mrj.make_packing(2, 100, protocol, checkpoint=checkpoint, checkpoint_seconds=0.0)
+    assert checkpoint.exists()
+    with mock.patch.object(mrj, "jam", side_effect=lambda *a, **k: original(*a, **k)) as spy:
+        resumed = mrj.make_packing(2, 100, protocol, checkpoint=checkpoint, checkpoint_seconds=0.0)
+    assert spy.call_count == 1  # the polish only
+    assert np.array_equal(resumed.positions, packing.positions) and np.array_equal(resumed.box, packing.box)
+    assert not checkpoint.exists()

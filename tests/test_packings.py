@@ -10,6 +10,7 @@ from randmedia.describe import packings
 from randmedia.generate.spheres import lattice_spheres, overlapping_spheres
 from randmedia.periodic import Cell, pairs_within
 from randmedia.theory import overlapping as theory
+from randmedia.theory.balls import poisson_intensity
 
 R = 0.5
 V_R, A_R = 4 * math.pi * R**3 / 3, 4 * math.pi * R**2
@@ -58,7 +59,7 @@ def test_one_body_terms_match_the_exact_overlapping_sphere_functions():
     f_out = theory.surface_void(r, R, phi, 3) / (s_over_phi1 * s2v)
     np.testing.assert_allclose(one["q"], 1.0 - f_out, rtol=1e-12)
     rho_J = theory.surface_surface(r, R, phi, 3) / s2v - (s_over_phi1 * f_out) ** 2
-    np.testing.assert_allclose(one["a"], rho_J / theory.number_density(phi, R, 3) / A_R, rtol=1e-10)
+    np.testing.assert_allclose(one["a"], rho_J / poisson_intensity(phi, R, 3) / A_R, rtol=1e-10)
 
 
 def test_pair_distances_match_the_kd_tree_pair_search_in_a_triclinic_cell():
@@ -149,7 +150,7 @@ def test_poisson_expectation_of_the_two_body_parts_is_exact():
         two_s2 = f["S2"] - f["phi"] * one["p"]
         values.append(np.concatenate([two_s2, f["F_sv_two_body"], f["F_ss_two_body"]]))
     values = np.array(values)
-    rho = theory.number_density(phi, R, 3)
+    rho = poisson_intensity(phi, R, 3)
     eta, s = rho * V_R, rho * A_R
     expected = np.concatenate([np.full(4, eta**2), np.full(4, s * eta), np.full(4, s**2)])
     sem = values.std(axis=0, ddof=1) / np.sqrt(len(values))

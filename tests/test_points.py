@@ -11,6 +11,7 @@ from randmedia.describe import points
 from randmedia.generate.spheres import lattice_covering_radius, lattice_spheres, overlapping_spheres
 from randmedia.periodic import Cell, padded_images
 from randmedia.theory import overlapping as theory
+from randmedia.theory.balls import poisson_intensity
 
 
 @pytest.mark.parametrize("box", [TRICLINIC, np.eye(3) * 5.3], ids=["triclinic", "cubic"])
@@ -61,7 +62,7 @@ def test_pore_sizes_and_exclusion_probability_of_overlapping_spheres(poisson_sam
         F.append(e[[550, 600, 700]] / e[500])
         moments.append([st["sum_delta"] / st["n_matrix"], st["sum_delta2"] / st["n_matrix"]])
         assert st["n_matrix"] == 20_000
-    rho = theory.number_density(phi, R, 3)
+    rho = poisson_intensity(phi, R, 3)
     for values, exact in (
         (ev, theory.exclusion_probability(np.array([0.2, 0.5, 0.8]), rho, 3)),
         (F, theory.pore_size_complementary_cdf(np.array([0.05, 0.1, 0.2]), R, phi, 3)),
@@ -110,7 +111,7 @@ def test_number_variance_of_poisson_centres_is_the_mean(poisson_samples):
         moments.append([m[key] for key in ("n_throws", "sum_N", "sum_N2", "sum_N3", "sum_N4")])
     moments = np.array(moments).transpose(1, 0, 2)
     mean, var, mean_sem, var_sem = points.pooled_number_variance(*moments[:3])
-    mu = theory.number_density(0.636, 0.5, 3) * 4 * math.pi * radii**3 / 3
+    mu = poisson_intensity(0.636, 0.5, 3) * 4 * math.pi * radii**3 / 3
     assert np.all(np.abs(mean - mu) < 4 * mean_sem)
     assert np.all(np.abs(var - mu) < 4 * var_sem), (var, mu, var_sem)
     skew, kurt = points.pooled_shape(*moments)

@@ -7,15 +7,15 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
-from randmedia.generate.poisson_planes import crossing_fraction, specific_surface
 from randmedia.theory import poisson_planes as pp
 from randmedia.theory.debye_formulas import debye_surface_surface, debye_surface_void
+from randmedia.theory.plane_process import crossing_fraction, specific_surface
 
 
 @pytest.mark.parametrize("dim", [2, 3])
 def test_limits_of_the_surface_functions(dim):
     phi2, a = 0.3, 4.0
-    s = specific_surface(phi2, a, dim)
+    s = specific_surface(a, phi2, dim)
     assert pp.surface_void(0.0, phi2, a, dim) == pytest.approx(s / 2)
     assert pp.surface_void(1e4, phi2, a, dim) == pytest.approx(s * (1 - phi2))
     assert pp.surface_surface(1e6, phi2, a, dim) == pytest.approx(s * s, rel=1e-4)
@@ -126,7 +126,7 @@ def test_surface_void_against_monte_carlo_on_the_continuum(r_over_a):
     phi2, a = 0.2, 1.0
     r = r_over_a * a
     mean, se = _surface_monte_carlo(r, phi2, a, rng)
-    s = specific_surface(phi2, a, 3)
+    s = specific_surface(a, phi2, 3)
     exact = float(pp.surface_void(r, phi2, a, 3)) / s
     assert abs(mean - exact) <= 4 * se
     conjecture = float(debye_surface_void(r, phi2, a, dim=3)) / s
@@ -141,7 +141,7 @@ def test_surface_surface_against_monte_carlo_on_the_continuum():
     rng = np.random.default_rng(5)
     phi2, a, r = 0.2, 1.0, 1.0
     mean, se = _surface_monte_carlo(r, phi2, a, rng, n_tessellations=2000, points=4, slab=0.3 * a)
-    s = specific_surface(phi2, a, 3)
+    s = specific_surface(a, phi2, 3)
     exact = float(pp.surface_surface(r, phi2, a, 3)) / s
     assert abs(mean - exact) <= 4 * se + 0.03 * exact
     conjecture = float(debye_surface_surface(r, phi2, a, dim=3)) / s

@@ -15,6 +15,7 @@ from randmedia.generate.hard_particles.geometry import cubic_box
 from randmedia.generate.hard_particles.run import run_chain
 from randmedia.generate.hard_particles.settings import MCSettings
 from randmedia.theory import scaled_particle as spt
+from randmedia.theory.hard_spheres import specific_surface
 
 REFERENCE = Path(__file__).resolve().parents[1] / "config" / "reference"
 
@@ -43,7 +44,7 @@ def test_normalization_origin_and_continuity(dim, phi):
     total = quad(lambda d: float(spt.pore_size_density(d, phi, dim, diameter)), 0, np.inf)[0]
     assert total == pytest.approx(1.0, abs=1e-9)
     assert spt.pore_size_ccdf(0.0, phi, dim, diameter) == pytest.approx(1.0)
-    s = spt.specific_surface(phi, radius, dim)  # Eq. 40 in 2D: 2 phi2 / R
+    s = specific_surface(radius, phi, dim)  # Eq. 40 in 2D: 2 phi2 / R
     assert spt.pore_size_density(0.0, phi, dim, diameter) == pytest.approx(s / (1 - phi))
     eps = 1e-9
     for f in (spt.exclusion_probability, spt.gv):
@@ -99,7 +100,8 @@ def _nearest_centre_distances(samples, box, n_points, rng):
 def test_hard_sphere_liquid_exclusion_probability_and_pore_moments():
     """Our liquid (N = 256, phi = 0.478): E_V(r) against the paper's Table II (their MC) and
     the scaled-particle curve; pore-size moments against the quoted 0.098 D, 0.014 D^2."""
-    settings = MCSettings(equilibration_msd=1.5, sample_msd=0.3, measure_every=10)
+    settings = MCSettings(equilibration_msd=1.5, sample_msd=0.3, measure_every=10, contact_range=0.1,
+                          contact_order=3)
     box = cubic_box(256, 0.478, 3)
     result = run_chain(256, box, 1.0, 12, np.random.default_rng(21), settings)
     r = _nearest_centre_distances(result.samples, box, 40000, np.random.default_rng(2))
@@ -118,7 +120,8 @@ def test_hard_sphere_liquid_exclusion_probability_and_pore_moments():
 
 
 def test_hard_disk_pore_sizes_against_eq41():
-    settings = MCSettings(equilibration_msd=2.0, sample_msd=1.0)
+    settings = MCSettings(equilibration_msd=2.0, sample_msd=1.0, measure_every=5, contact_range=0.1,
+                          contact_order=3)
     box = cubic_box(400, 0.3, 2)
     result = run_chain(400, box, 1.0, 30, np.random.default_rng(22), settings)
     r = _nearest_centre_distances(result.samples, box, 20000, np.random.default_rng(3))

@@ -78,7 +78,7 @@ def test_ideal_gas_samples_the_uniform_distribution():
     (checks the move proposal is symmetric: a biased one drifts the density)."""
     radius, n = 1.0, 20
     schedule = MCSchedule(equilibration_sweeps=200, production_sweeps=40000, frame_interval=40,
-                          tune_fraction=0.0, initial_step=0.4)
+                          count_interval=1, tune_fraction=0.0, initial_step=0.4)
     run = run_fluid(Potential("lj", 0.0, epsilon=0.0), radius, n / (4 * math.pi), 1.0, schedule,
                     np.random.default_rng(2), THRESHOLDS)
     assert run.stats["acceptance_production"] == 1.0
@@ -103,13 +103,14 @@ def _two_particle_mean_energy(potential, radius, temperature):
 
 
 @pytest.mark.parametrize("potential, radius, temperature", [
-    (Potential("lj"), 1.0, 1.0),
+    (Potential("lj", 1.0), 1.0, 1.0),
     (Potential("ucc", 2.0), 1.5, 0.8),
     (Potential("udd", 1.0), 1.2, 0.5),
 ])
 def test_two_particles_reproduce_the_exact_mean_energy(potential, radius, temperature):
     exact = _two_particle_mean_energy(potential, radius, temperature)
-    schedule = MCSchedule(equilibration_sweeps=2000, production_sweeps=200000, frame_interval=1000)
+    schedule = MCSchedule(equilibration_sweeps=2000, production_sweeps=200000, frame_interval=1000,
+                          count_interval=1)
     run = run_fluid(potential, radius, 2 / (4 * math.pi * radius**2), temperature, schedule,
                     np.random.default_rng(3), THRESHOLDS)
     energies = run.energy[schedule.equilibration_sweeps:]
@@ -167,7 +168,7 @@ class _KillAfter(logging.Logger):
 def test_killed_run_resumes_bit_identically(tmp_path):
     radius = 2.0
     thresholds = cos_thresholds(cap_grid(radius, 6), radius)
-    schedule = MCSchedule(equilibration_sweeps=40, production_sweeps=200, frame_interval=10)
+    schedule = MCSchedule(equilibration_sweeps=40, production_sweeps=200, frame_interval=10, count_interval=1)
     reference = run_fluid(Potential("udc", 1.0), radius, 0.5, 5.2, schedule, np.random.default_rng(6),
                           thresholds)
     checkpoint = tmp_path / "run.checkpoint.npz"
@@ -182,7 +183,7 @@ def test_killed_run_resumes_bit_identically(tmp_path):
     for name in ("frames", "energy", "acceptance", "axis_counts"):
         np.testing.assert_array_equal(getattr(reference, name), getattr(resumed, name), err_msg=name)
     # a checkpoint of another run is not used
-    other = MCSchedule(equilibration_sweeps=40, production_sweeps=200, frame_interval=20)
+    other = MCSchedule(equilibration_sweeps=40, production_sweeps=200, frame_interval=20, count_interval=1)
     with pytest.raises(_Abort):
         run_fluid(Potential("udc", 1.0), radius, 0.5, 5.2, schedule, np.random.default_rng(6),
                   thresholds, checkpoint=checkpoint, checkpoint_seconds=0.0, log=_KillAfter(12),
@@ -208,11 +209,11 @@ def test_autocorrelation_time_of_known_processes():
     (lambda: particle_number(5.0, 0.0), "number density rho"),
     (lambda: particle_number(5.0, -0.5), "number density rho"),
     (lambda: particle_number(0.1, 0.5), "fewer than 2 particles"),
-    (lambda: Potential("yukawa"), "unknown pair potential 'yukawa'"),
+    (lambda: Potential("yukawa", 1.0), "unknown pair potential 'yukawa'"),
     (lambda: Potential("ucc", -1.0), "coupling"),
     (lambda: cos_thresholds([1.0, 6.0], 5.0), "exceeds R"),
-    (lambda: MCSchedule(10, 100, 0), "frame_interval"),
-    (lambda: run_fluid(Potential("lj"), 2.0, 0.5, 0.0, MCSchedule(1, 10, 5), np.random.default_rng(0),
+    (lambda: MCSchedule(10, 100, 0, 1), "frame_interval"),
+    (lambda: run_fluid(Potential("lj", 1.0), 2.0, 0.5, 0.0, MCSchedule(1, 10, 5, 1), np.random.default_rng(0),
                        THRESHOLDS), "temperature"),
 ])
 def test_bad_parameters_are_rejected_with_a_clear_message(call, message):

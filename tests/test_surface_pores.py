@@ -13,8 +13,8 @@ from randmedia.describe.pore_size import pixel_centre_distances, pore_size_funct
 from randmedia.describe.surface import (euler_characteristic, interface_density, interface_segments,
                                         periodic_cross_correlation, segment_lengths,
                                         specific_surface_of, surface_functions, tune_sigma)
-from randmedia.describe.two_phase import RadialBinning
 from randmedia.generate.disks import digitize_disks, overlapping_disks_image
+from randmedia.numerics.radial import RadialBinning
 from randmedia.theory import overlapping as ov
 
 

@@ -6,14 +6,15 @@ import pytest
 from scipy.integrate import quad
 
 from randmedia.theory import debye_formulas as formulas
-from randmedia.theory import hard_disks
-from randmedia.theory.debye import debye_s2, debye_specific_surface
+from randmedia.theory import hard_disks, hard_spheres
+from randmedia.theory.debye import debye_s2
+from randmedia.theory.debye_formulas import debye_specific_surface
 
 
 @pytest.mark.parametrize("phi2", [0.1, 0.3, 0.5, 0.8])
 def test_eq_24_limits_and_eq_25(phi2):
     a = 5.0
-    s = debye_specific_surface(phi2, a)
+    s = debye_specific_surface(a, phi2)
     assert formulas.debye_surface_void(0.0, phi2, a) == pytest.approx(s / 2)  # Eq. (12)
     assert formulas.debye_surface_void(1e4, phi2, a) == pytest.approx(s * (1 - phi2))  # Eq. (14)
     r = np.linspace(0.1, 30, 50)
@@ -24,7 +25,7 @@ def test_eq_24_limits_and_eq_25(phi2):
 
 def test_eq_26_limits_and_phase_inversion():
     a, phi2 = 5.0, 0.3
-    s = debye_specific_surface(phi2, a)
+    s = debye_specific_surface(a, phi2)
     assert formulas.debye_surface_surface(1e4, phi2, a) == pytest.approx(s**2)  # Eq. (16)
     r = 1e-6
     assert formulas.debye_surface_surface(r, phi2, a) * r == pytest.approx(s / np.pi, rel=1e-5)
@@ -54,7 +55,7 @@ def test_hard_disk_lineal_path_and_chords_are_consistent():
     pi phi1 / s (Eq. 20) for s of Eq. (40); L(0) = phi1."""
     radius, phi2 = 10.0, 0.3
     phi1 = 1 - phi2
-    s = hard_disks.specific_surface(radius, phi2)
+    s = hard_spheres.specific_surface(radius, phi2, 2)  # Eq. (40)
     assert hard_disks.lineal_path_void(0.0, radius, phi2) == pytest.approx(phi1)
     total, _ = quad(lambda z: hard_disks.chord_density_void(z, radius, phi2), 0, np.inf)
     mean, _ = quad(lambda z: z * hard_disks.chord_density_void(z, radius, phi2), 0, np.inf)
@@ -64,7 +65,7 @@ def test_hard_disk_lineal_path_and_chords_are_consistent():
               + hard_disks.lineal_path_void(z - h, radius, phi2)) / h**2
     assert mean / phi1 * second == pytest.approx(hard_disks.chord_density_void(z, radius, phi2), rel=1e-5)
     with pytest.raises(ValueError):
-        hard_disks.specific_surface(10.0, 1.2)
+        hard_spheres.specific_surface(10.0, 1.2, 2)
 
 
 def test_3d_conjectures_eqs_44_45_as_printed_and_their_limits():
@@ -80,13 +81,13 @@ def test_3d_conjectures_eqs_44_45_as_printed_and_their_limits():
     np.testing.assert_allclose(formulas.debye_surface_surface(r, phi2, a, dim=3),
                                16 / a**2 * phi1**2 * phi2**2 + 2 / (a * r) * phi1 * phi2 * decay
                                + decay / (2 * a**2 * (1 + decay)) * abs(phi2 - phi1), rtol=1e-14)  # (45)
-    s = formulas.debye_surface_specific(phi2, a, dim=3)
+    s = formulas.debye_specific_surface(a, phi2, dim=3)
     assert s == pytest.approx(4 * phi1 * phi2 / a)
     assert formulas.debye_surface_void(0.0, phi2, a, dim=3) == pytest.approx(s / 2)
     assert formulas.debye_surface_void(1e4, phi2, a, dim=3) == pytest.approx(s * phi1)
     assert formulas.debye_surface_surface(1e4, phi2, a, dim=3) == pytest.approx(s * s)
     tiny = 1e-7
     assert tiny * formulas.debye_surface_surface(tiny, phi2, a, dim=3) == pytest.approx(s / 2, rel=1e-5)
-    assert formulas.debye_surface_specific(phi2, a) == pytest.approx(np.pi * phi1 * phi2 / a)
+    assert formulas.debye_specific_surface(a, phi2) == pytest.approx(np.pi * phi1 * phi2 / a)
     with pytest.raises(ValueError, match="dim"):
         formulas.debye_surface_surface(r, phi2, a, dim=4)

@@ -46,6 +46,7 @@ import math  # noqa: E402
 from scipy.spatial import cKDTree  # noqa: E402
 
 from randmedia.theory import overlapping as ov  # noqa: E402
+from randmedia.theory.balls import poisson_intensity, unit_ball_volume  # noqa: E402
 
 R, PHI2 = 1.3, 0.3
 ETA = -math.log(1 - PHI2)
@@ -92,7 +93,7 @@ def test_limits_and_identities(dim):
     assert ov.surface_surface(10 * R, R, PHI2, dim) == pytest.approx(s**2)
     # small-r divergence of F_ss: (d-1) omega_{d-1} s / (d omega_d r)
     r = 1e-7
-    omega = ov.unit_ball_volume
+    omega = unit_ball_volume
     assert ov.surface_surface(r, R, PHI2, dim) * r == pytest.approx(
         (dim - 1) * omega(dim - 1) * s / (dim * omega(dim)), rel=1e-5)
     # Eq. (7): S2'(0) = -omega_{d-1} s / (d omega_d) (-s/pi in 2D, -s/4 in 3D)
@@ -122,7 +123,7 @@ def test_three_dimensional_surface_void_and_pore_size_match_monte_carlo():
     Estimates are averaged over independent boxes; the tolerance is 4 SEM over boxes."""
     rng = np.random.default_rng(11)
     radius, phi2, side, boxes = 0.5, 0.4, 6.0, 12
-    rho = ov.number_density(phi2, radius, 3)
+    rho = poisson_intensity(phi2, radius, 3)
     distances, deltas = (0.2, 0.6, 1.5), (0.05, 0.15, 0.3)
     fsv, cdf = np.empty((boxes, 3)), np.empty((boxes, 3))
     for b in range(boxes):

@@ -5,7 +5,8 @@ import itertools
 import numpy as np
 import pytest
 
-from randmedia.describe.two_phase import RadialBinning, periodic_autocorrelation, two_point_function
+from randmedia.describe.two_phase import two_point_function
+from randmedia.numerics.radial import RadialBinning, periodic_autocorrelation
 from randmedia.generate.disks import overlapping_disks_image
 from randmedia.theory.overlapping import s2_void
 

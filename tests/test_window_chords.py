@@ -19,9 +19,9 @@ from randmedia.describe.chords import chord_grids
 from randmedia.describe.window_chords import (WindowLines, WindowRuns, box_chord, sample_window_chords,
                                               window_chord_density, window_lineal_path,
                                               window_lineal_path_and_chords, window_lines)
-from randmedia.describe.window_surface import default_margin
 from randmedia.generate.balls import overlapping_balls_image
 from randmedia.generate.poisson_planes import Planes, poisson_plane_image, poisson_planes
+from randmedia.numerics.gaussian import default_margin
 from randmedia.theory import overlapping as ov
 
 

@@ -13,8 +13,8 @@ import pytest
 from randmedia.describe.pore_size import pore_size_functions
 from randmedia.describe.window_pores import (reduced_sample_F, window_pore_size_functions,
                                              window_void_distances)
-from randmedia.describe.window_surface import default_margin
 from randmedia.generate.balls import overlapping_balls_image
+from randmedia.numerics.gaussian import default_margin
 from randmedia.theory import overlapping as ov
 
 

@@ -16,7 +16,7 @@ from randmedia.describe.surface import (SURFACE_3D, mean_specific_surface, surfa
                                         surface_functions, tune_sigma)
 from randmedia.describe.isosurface import interface_triangles, surface_density, triangle_areas
 from randmedia.describe.window import window_binning
-from randmedia.describe.window_surface import (_interior, default_margin, interior_fields,
+from randmedia.describe.window_surface import (_interior, interior_fields,
                                                mean_window_specific_surface, tune_sigma_window,
                                                window_correlations, window_level_set,
                                                window_specific_surface,
@@ -24,6 +24,7 @@ from randmedia.describe.window_surface import (_interior, default_margin, interi
                                                window_surface_functions)
 from randmedia.generate.balls import overlapping_balls_image
 from randmedia.generate.poisson_planes import poisson_plane_image
+from randmedia.numerics.gaussian import default_margin
 from randmedia.theory import overlapping as ov
 
 

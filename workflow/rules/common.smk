@@ -1,4 +1,6 @@
 # Shared helpers and environment of every rule.
+import csv
+import math
 import os
 import re
 from pathlib import Path
@@ -117,11 +119,13 @@ def report_benchmark_patterns(paper):
 # (called by the rules of workflow/rules/debye2020.smk; they read that file's constants)
 
 
+# LEVEL_SET_SURFACE, LEVEL_SET_PORES: defined in debye2020.smk (included after this file)
 def level_set_files(system):
     return {"surface": LEVEL_SET_SURFACE.format(system=system),
             "pores": LEVEL_SET_PORES.format(system=system)}
 
 
+# DISKS_SYSTEM, HARD_DISKS_SYSTEM: defined in debye2020.smk (included after this file)
 def comparison_models():
     """The Sec. VI comparison systems (overlapping and equilibrium hard disks)."""
     return [DISKS_SYSTEM, HARD_DISKS_SYSTEM]
@@ -135,6 +139,7 @@ def figure_outputs(number, in_report=False):
             "png": report_figure(png, "debye2020", number) if in_report else png}
 
 
+# COMPARISON_PHI2, DISKS_SYSTEM, HARD_DISKS_SYSTEM, MEDIA_CHORDS, DISKS_CHORDS: defined in debye2020.smk (included after this file)
 def section6_inputs(number):
     """Inputs of Figs. 9-12: the comparison-phi2 media, overlapping and hard disks."""
     media = level_set_files(f"media_phi{COMPARISON_PHI2}")
@@ -162,18 +167,22 @@ def _m_reference_column(path, column):
         return [float(row[column]) for row in csv.DictReader(handle)]
 
 
+# M_SAMPLES: defined in mrj2016.smk (included after this file)
 def m_have(system):
     return system in M_SAMPLES
 
 
+# M_KINDS: defined in mrj2016.smk (included after this file)
 def m_systems(kind):
     return [s for s in M_KINDS[kind] if m_have(s)]
 
 
+# M_SAMPLES, M_CHUNK: defined in mrj2016.smk (included after this file)
 def m_n_chunks(system):
     return math.ceil(len(M_SAMPLES[system]) / M_CHUNK)
 
 
+# M_CHUNK, M_SAMPLES: defined in mrj2016.smk (included after this file)
 def m_chunk_samples(wildcards):
     first = int(wildcards.c) * M_CHUNK
     return M_SAMPLES[wildcards.system][first: first + M_CHUNK]
@@ -189,6 +198,7 @@ def m_inputs(pairs):
             if system in m_systems(kind)}
 
 
+# M_DESCRIPTORS, M_SPECTRAL, M_TABLE_K, M_PORES, M_WINDOWS: defined in mrj2016.smk (included after this file)
 def m_describe_settings(kind, system, merge=False):
     """The config values a describe job of one kind uses, and nothing else (so that changing
     another kind's keys reruns none of its jobs): keyword arguments of
@@ -211,6 +221,7 @@ def m_describe_settings(kind, system, merge=False):
             "seed": config["seed"]}
 
 
+# M_SAMPLES: defined in mrj2016.smk (included after this file)
 def m_describe_inputs(wildcards):
     """The chunk files of a system with several chunks; its samples when they form one chunk
     (then the merge job computes them itself: one job instead of two)."""
@@ -241,13 +252,14 @@ def sphere_figure(number, second_reading=False, in_report=False):
     return files
 
 
+# SPHERE_DESCRIPTOR: defined in sphere2019.smk (included after this file)
 def sphere_descriptors(systems):
     return expand(SPHERE_DESCRIPTOR, system=systems)
 
 
 # --------------------------------------------------------------------------- record (record.smk)
 
-from randmedia.config import load_config as _load_config
+from randmedia.config import load_config as _load_config, validate_config
 from randmedia.record import paper_config as _paper_config
 
 #: the paper-fidelity configuration (config/config.yaml alone, defaults filled in)

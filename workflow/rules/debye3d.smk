@@ -6,13 +6,13 @@
 # * per system: S2 against the exact one (Delta S2 of the constructions), level-set surface
 #   functions, pores and chords (window estimators for the windows);
 # * `snakemake debye3d`: not part of `all` (the papers); the system table is
-#   randmedia.studies.debye3d.systems.
+#   randmedia.config.debye3d_systems.
 
 import re
 
+from randmedia.config import debye3d_systems
 from randmedia.studies.debye3d import LEVEL_SET_KINDS as DEBYE3D_LEVEL_SET_KINDS
 from randmedia.studies.debye3d import WINDOW_KINDS as DEBYE3D_WINDOW_KINDS
-from randmedia.studies.debye3d import systems as debye3d_systems
 
 DEBYE3D_SYSTEMS = debye3d_systems(config["debye3d"])
 DEBYE3D_SAMPLE = results_path("debye3d/{system}/sample{k}.nc")

@@ -56,7 +56,7 @@ for _system, _samples in (("equilibrium", EQUILIBRIUM_SAMPLES), ("mrj", MRJ_SAMP
 #: descriptor kinds and the systems they are computed for (if present)
 M_KINDS = {
     "correlation": ["equilibrium", "mrj", "mrj_large"],
-    "spectral": ["overlapping", "equilibrium", "mrj_large", "fcc", "bcc"],
+    "spectral": ["overlapping", "equilibrium", "mrj", "mrj_large", "fcc", "bcc"],
     "points": ["overlapping", "equilibrium", "mrj", "fcc", "bcc"],
     "windows": ["overlapping", "equilibrium", "mrj"],
 }
@@ -171,8 +171,10 @@ M_FIGURE_INPUTS = {
     3: m_inputs([("correlation", "equilibrium"), ("correlation", "mrj")]),
     4: m_inputs([("correlation", "equilibrium"), ("correlation", "mrj")]),
     5: m_inputs([("correlation", "equilibrium"), ("correlation", "mrj")]),
-    6: m_inputs([("spectral", "equilibrium"), ("spectral", "mrj_large"),
-                 ("correlation", "equilibrium"), ("correlation", "mrj_large")]),
+    # the top panel: the N = 10 000 packings, or the N = 2000 ones when there are none
+    6: m_inputs([("spectral", "equilibrium"), ("correlation", "equilibrium")]
+                + ([("spectral", "mrj_large"), ("correlation", "mrj_large")] if m_have("mrj_large")
+                   else [("spectral", "mrj"), ("correlation", "mrj")])),
     7: m_inputs([("points", s) for s in ("overlapping", "equilibrium", "mrj", "fcc", "bcc")]),
     8: m_inputs([("points", s) for s in ("overlapping", "equilibrium", "mrj", "fcc", "bcc")]),
     9: m_inputs([("windows", s) for s in ("overlapping", "equilibrium", "mrj")]),

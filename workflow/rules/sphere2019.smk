@@ -81,6 +81,7 @@ rule sphere2019_fluid:
         density=SPHERE_FLUIDS["density"],
         temperature=SPHERE_FLUIDS["temperature"],
         target_acceptance=SPHERE_FLUIDS["target_acceptance"],
+        tune_fraction=SPHERE_FLUIDS["tune_fraction"],
         initial_step=SPHERE_FLUIDS["initial_step"],
         checkpoint_seconds=SPHERE_FLUIDS["checkpoint_seconds"],
         n_a=SPHERE_CAPS["n_a"],

@@ -21,7 +21,7 @@ import numpy as np
 import xarray as xr
 
 from randmedia.compare import compare
-from randmedia.describe.two_phase import RadialBinning
+from randmedia.numerics.radial import RadialBinning
 from randmedia.stats import standard_error
 from randmedia.theory.overlapping import (chord_rate, lineal_path_void, pore_size_complementary_cdf,
                                           pore_size_moment, s2_void, specific_surface,

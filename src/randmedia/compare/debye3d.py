@@ -108,7 +108,7 @@ def _nearest(values: np.ndarray, target: float) -> int:
 
 def shell_average(function, r_label: float, width: float, points: int = 64) -> float:
     """Average of a radial function over the radial bin holding ``r_label`` (bin k covers
-    |v| within width/2 of k width, :class:`~randmedia.describe.two_phase.RadialBinning`),
+    |v| within width/2 of k width, :class:`~randmedia.numerics.radial.RadialBinning`),
     weighted by r^2 -- the continuum form of the bin's average over its lattice displacements
     in 3D. Used for the exact and conjectured values, so that a function that bends (or has a
     cusp, like F_ss of overlapping spheres at r = 2R) is compared bin for bin, not at a label.

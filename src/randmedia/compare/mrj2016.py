@@ -542,12 +542,13 @@ def _validation_rows(rows: Rows, inputs, params):
     """Estimators against exact results: overlapping spheres, lattices, Eq. (21), S2 limits."""
     from randmedia.generate.spheres import lattice_covering_radius
     from randmedia.theory import overlapping as theory
+    from randmedia.theory.balls import poisson_intensity
 
     phi = params["overlapping_phi"]
     radius = 0.5
     pts = _load(inputs, "points", "overlapping")
     if pts is not None:
-        rho = theory.number_density(phi, radius, 3)
+        rho = poisson_intensity(phi, radius, 3)
         for r in (0.2, 0.4, 0.5, 0.6, 0.8, 1.0):
             mean, sem = _value_at(pts, "r", "E_V", r)
             rows.add("validation_overlapping_E_V", f"r/D={r:g}", float(theory.exclusion_probability(r, rho, 3)),
@@ -562,7 +563,7 @@ def _validation_rows(rows: Rows, inputs, params):
                      *_mean_sem(pts[name].values), reason_if_failed="statistical (3 SEM) or estimator bias")
     win = _load(inputs, "windows", "overlapping")
     if win is not None:
-        rho = theory.number_density(phi, radius, 3)
+        rho = poisson_intensity(phi, radius, 3)
         R = win["R"].values
         for target in (0.5, 1.0, 1.5, 2.0, 2.5, 3.0):
             i = int(np.argmin(np.abs(R - target)))

@@ -25,7 +25,7 @@ the axis directions on a pixel grid):
   M whose integral is exactly the polyline length; s = <M>;
 * F_sv and F_ss are the exact periodic cross-/auto-correlations of M with the
   void indicator (sub-pixel grid) and with itself, by FFT, radially averaged
-  over all displacement directions (:class:`~randmedia.describe.two_phase.RadialBinning`),
+  over all displacement directions (:class:`~randmedia.numerics.radial.RadialBinning`),
   with equal weights per displacement (``bin_weighting="lattice"``) or per
   direction (``"angular"``). The level set of a pixel image still prefers the
   grid's axes and diagonals (on digitized overlapping disks its interface
@@ -49,7 +49,7 @@ sub-voxel grid; the interface is extracted by marching tetrahedra as triangles a
 area deposited cloud-in-cell (:mod:`randmedia.describe.isosurface`), so s = <M> is exactly
 the triangulated area per volume; the Euler characteristic is that of the piecewise-linear
 region (:func:`randmedia.describe.isosurface.euler_characteristic_3d`). The direction-average
-weights of :class:`~randmedia.describe.two_phase.RadialBinning` are defined in 2D only, so
+weights of :class:`~randmedia.numerics.radial.RadialBinning` are defined in 2D only, so
 3D bins weight every lattice displacement equally (``bin_weighting="lattice"``, the 3D
 default); a 3D shell of half-voxel width holds ~4 pi r^2 w lattice points spread over all
 directions (~1600 at r = 2 voxels with 4 sub-voxels per voxel), which is what the
@@ -74,8 +74,8 @@ from randmedia.describe.chords import LevelSet, bilinear_stencil
 from randmedia.describe.isosurface import (euler_characteristic_3d, interface_triangles,
                                            surface_density, triangle_areas)
 from randmedia.describe.percolation import wrapping_directions
-from randmedia.describe.two_phase import RadialBinning
 from randmedia.io import VariableSpec
+from randmedia.numerics.radial import RadialBinning
 from randmedia.progress import Progress
 from randmedia.stats import standard_error
 

@@ -24,7 +24,7 @@ along that axis.
   divided by their number prod_i (L_i - |v_i|); E C_w(v) = S2(|v|) for any
   stationary medium. Computed by FFT of the image zero-padded to L_i + r_max per
   axis (no wrapped pairs reach |v_i| <= r_max), radially averaged over all
-  displacements with the bins of :class:`randmedia.describe.two_phase.RadialBinning`
+  displacements with the bins of :class:`randmedia.numerics.radial.RadialBinning`
   (the same bins and labels as the periodic estimator for the same r_max), each
   displacement with equal weight.
 """
@@ -38,7 +38,7 @@ from typing import Callable
 import numpy as np
 import scipy.fft
 
-from randmedia.describe.two_phase import RadialBinning
+from randmedia.numerics.radial import RadialBinning
 
 
 def periodic_estimator_expectation(s2: Callable[[np.ndarray], np.ndarray],

@@ -10,7 +10,7 @@ would cross a seam that is not in the medium. Here the lines are clipped to the 
    (:func:`randmedia.describe.window_surface.window_level_set`: voxel indicator repeated
    ``supersample``^3 times, Gaussian-filtered with a non-wrapping boundary, threshold at the
    window's void fraction), so chords and F_sv, F_ss see one medium; lines are walked only
-   inside the interior box :func:`~randmedia.describe.window_surface.default_margin`
+   inside the interior box :func:`~randmedia.numerics.gaussian.default_margin`
    sub-voxels from every face, where the filtered field is that of the infinite medium.
 2. **Lines.** Directions: the stratified spherical Fibonacci set turned by one random
    rotation per image (:func:`randmedia.describe.chords.sphere_line_directions`, as in the
@@ -55,7 +55,8 @@ import xarray as xr
 
 from randmedia.describe.chords import (_inside3, _walk3, chord_functions_dataset, chord_grids, segments_in_phase,
                                        sphere_line_directions)
-from randmedia.describe.window_surface import default_margin, window_level_set
+from randmedia.describe.window_surface import window_level_set
+from randmedia.numerics.gaussian import default_margin
 
 
 class WindowRuns(NamedTuple):

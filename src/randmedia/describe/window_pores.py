@@ -14,7 +14,7 @@ wrapped interface and the missing outside make distances near the faces wrong. H
    least the kernel radius ``int(4 sigma m + 0.5)`` sub-voxels from every face (the cubes
    that wrap are dropped with them).
 2. **Query points**: one uniformly random point per voxel of the interior box
-   (:func:`~randmedia.describe.window_surface.default_margin` sub-voxels from every face, one
+   (:func:`~randmedia.numerics.gaussian.default_margin` sub-voxels from every face, one
    voxel more than the kernel radius), kept when the level set puts it in the void; its
    distance d to the nearest kept triangle (exact point-triangle distance to the
    ``k_candidates`` nearest centroids, as in the periodic estimator) and its distance b to the
@@ -40,7 +40,8 @@ from scipy.spatial import cKDTree
 
 from randmedia.describe.isosurface import interface_triangles
 from randmedia.describe.pore_size import _nearest_triangle_distance, pore_functions_dataset
-from randmedia.describe.window_surface import TRUNCATE, default_margin, window_level_set
+from randmedia.describe.window_surface import window_level_set
+from randmedia.numerics.gaussian import default_margin, kernel_radius
 from randmedia.progress import Progress
 
 
@@ -76,7 +77,7 @@ def window_void_distances(image: np.ndarray, rng: np.random.Generator, *, sigma:
     level_set = window_level_set(image, sigma, supersample)
     if margin is None:
         margin = default_margin(sigma, supersample)
-    kernel = int(TRUNCATE * float(sigma) * supersample + 0.5)
+    kernel = kernel_radius(sigma, supersample)
     if margin < kernel + 1:
         raise ValueError(f"margin {margin} sub-voxels must exceed the filter's kernel radius {kernel}")
     shape = np.array(image.shape[::-1], dtype=float)  # (x, y, z) in voxels

@@ -23,7 +23,7 @@ window counterpart -- standard minus-sampling:
    not touched, so the periodic path (which feeds the 2D paper workflow) is unchanged by
    construction.
 2. **Interior mask.** w = 1 on the box of sub-voxels at least ``margin`` sub-voxels from
-   every face. Default margin rule (:func:`default_margin`): the filter's truncation
+   every face. Default margin rule (:func:`randmedia.numerics.gaussian.default_margin`): the filter's truncation
    radius, ``int(4 sigma m + 0.5)`` sub-voxels (scipy's ``truncate=4``), plus one voxel
    (m sub-voxels). Inside that box the filtered field is *exactly* the field the infinite
    medium would give (the truncated kernel never reaches a face, so the boundary mode
@@ -63,20 +63,13 @@ from scipy.ndimage import gaussian_filter
 from randmedia.describe.chords import LevelSet
 from randmedia.describe.isosurface import interface_triangles, surface_density
 from randmedia.describe.surface import curve_variables, tune_sigma
-from randmedia.describe.two_phase import RadialBinning
 from randmedia.describe.window import window_binning
+from randmedia.numerics.gaussian import TRUNCATE, default_margin
+from randmedia.numerics.radial import RadialBinning
 from randmedia.progress import Progress
 
-#: scipy.ndimage.gaussian_filter's default kernel truncation, in standard deviations
-TRUNCATE = 4.0
 #: boundary mode of the window filter (non-wrapping)
 BOUNDARY_MODE = "reflect"
-
-
-def default_margin(sigma: float, supersample: int) -> int:
-    """Interior margin in sub-voxels: the Gaussian kernel's truncation radius
-    ``int(4 sigma m + 0.5)`` (as scipy computes it) plus one voxel (``m`` sub-voxels)."""
-    return int(TRUNCATE * float(sigma) * supersample + 0.5) + int(supersample)
 
 
 def window_level_set(image: np.ndarray, sigma: float, supersample: int) -> LevelSet:

@@ -372,7 +372,7 @@ def surface_pore_fits(systems: dict, *, a: float, fits: dict) -> "xr.Dataset":
                         f"{name}_r_at_max_dev": dev["r_at_max"],
                         f"{name}_mean_rel_dev": dev["mean_rel_dev"]})
         s = surface["s_samples"].values
-        row.update(s=s.mean(), s_sem=standard_error(s), s_exact=debye.debye_specific_surface(phi2, a),
+        row.update(s=s.mean(), s_sem=standard_error(s), s_exact=debye.debye_specific_surface(a, phi2),
                    sigma=float(surface.attrs["sigma"]))
         # specific Euler characteristic: logistic slope of F_sv at r = 0 (Eq. 13), two windows
         slopes = {}

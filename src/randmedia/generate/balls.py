@@ -4,7 +4,8 @@ The model (Ma & Torquato 2020, Sec. VI A for d = 2; Klatt & Torquato 2016,
 Sec. III A for d = 3; Torquato, *Random Heterogeneous Materials*, Ch. 3):
 centres form a Poisson point process of intensity rho; the balls (radius R)
 are phase 2, the rest is the void phase 1 with phi1 = exp(-rho v1(R)),
-v1 = omega_d R^d (Eq. 8), i.e. rho = -ln(1 - phi2) / v1.
+v1 = omega_d R^d (Eq. 8), i.e. rho = -ln(1 - phi2) / v1
+(:func:`randmedia.theory.balls.poisson_intensity`).
 
 Digitization: voxel (layer k, row i, column j) of an image of shape
 (nz, ny, nx) covers [j, j+1) x [i, i+1) x [k, k+1) and is phase 2 when its
@@ -17,10 +18,7 @@ unbiased estimate of S2(|v|) of the periodic model (Eqs. 32-33 in d = 2,
 
 One kernel for both dimensions: a 2D image is painted as one layer (nz = 1)
 through the plane of the centres (dz = 0), which is exactly the 2D rule.
-:mod:`randmedia.generate.disks` holds the original 2D painter, which the
-debye2020 rules import; for d = 2 this module gives bit-identical images from
-the same random stream (tested), so disks.py can become a wrapper of it
-without changing any result.
+:mod:`randmedia.generate.disks` gives the 2D case the names the debye2020 rules use.
 """
 
 from __future__ import annotations
@@ -30,42 +28,8 @@ import math
 import numpy as np
 from numba import njit
 
-
-def _check_dim(dim: int) -> None:
-    if dim not in (2, 3):
-        raise ValueError(f"dim must be 2 or 3, got {dim!r}")
-
-
-def ball_volume(radius: float, dim: int) -> float:
-    """v1(R) = omega_d R^d: pi R^2 (d = 2), 4 pi R^3 / 3 (d = 3) (Ma & Torquato 2020, Eq. 8)."""
-    _check_dim(dim)
-    if dim == 2:
-        return math.pi * radius * radius  # the expression of disks.poisson_intensity, bit for bit
-    return 4.0 * math.pi / 3.0 * radius * radius * radius
-
-
-def poisson_intensity(phi2: float, radius: float, dim: int) -> float:
-    """Number density rho giving the expected ball-phase fraction phi2: -ln(1 - phi2) / v1(R).
-
-    Parameters
-    ----------
-    phi2 : float
-        Expected volume fraction of the ball phase 2, in (0, 1).
-    radius : float
-        Ball radius R (> 0), in pixels (or any length unit).
-    dim : int
-        Dimension d, 2 or 3.
-
-    Returns
-    -------
-    float
-        Intensity rho, number of centres per unit volume (length unit of ``radius``, to the -d).
-    """
-    if not 0.0 < phi2 < 1.0:
-        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
-    if radius <= 0:
-        raise ValueError(f"radius must be > 0, got {radius}")
-    return -math.log1p(-phi2) / ball_volume(radius, dim)
+from randmedia.numerics.checks import check_dim, check_positive
+from randmedia.theory.balls import poisson_intensity
 
 
 def overlapping_ball_centers(rng: np.random.Generator, side: float, radius: float, phi2: float,
@@ -91,10 +55,9 @@ def overlapping_ball_centers(rng: np.random.Generator, side: float, radius: floa
     ndarray, shape (n, d)
         Centres (x, y[, z]) in [0, side), in pixels; n is Poisson distributed.
     """
-    if side <= 0:
-        raise ValueError(f"side must be > 0, got {side}")
+    check_positive(side, "side")
     mean = poisson_intensity(phi2, radius, dim)
-    for _ in range(dim):  # rho * side * side (* side): the 2D product of disks.py, bit for bit
+    for _ in range(dim):  # rho * side * side (* side)
         mean = mean * side
     count = rng.poisson(mean)
     return rng.uniform(0.0, side, size=(count, dim))
@@ -161,9 +124,8 @@ def digitize_balls(centers: np.ndarray, radius: float, shape: tuple[int, ...]) -
     """
     shape = tuple(int(n) for n in shape)
     dim = len(shape)
-    _check_dim(dim)
-    if radius <= 0:
-        raise ValueError(f"radius must be > 0, got {radius}")
+    check_dim(dim)
+    check_positive(radius, "radius")
     centers = np.asarray(centers, dtype=np.float64).reshape(-1, dim)
     padded = np.zeros((centers.shape[0], 3))
     padded[:, :dim] = centers

@@ -1,9 +1,11 @@
-"""Overlapping disks (2D Boolean model) on a periodic square, digitized to pixels.
+"""Overlapping disks (2D Boolean model) on a periodic square, digitized to pixels: the d = 2
+case of :mod:`randmedia.generate.balls`, under the names the debye2020 rules use.
 
 The model (Ma & Torquato 2020, Sec. VI A; Torquato, *Random Heterogeneous
 Materials*, Ch. 3): disk centres form a Poisson point process of intensity
 rho; the disks (radius R) are phase 2, the rest is the void phase 1 with
-volume fraction phi1 = exp(-rho * pi R^2), i.e. rho = -ln(1 - phi2) / (pi R^2).
+volume fraction phi1 = exp(-rho * pi R^2), i.e. rho = -ln(1 - phi2) / (pi R^2)
+(:func:`randmedia.theory.balls.poisson_intensity` with ``dim=2``).
 
 Digitization: pixel (row i, column j) of an L x L image covers
 [j, j+1) x [i, i+1) and is set to phase 2 when its *centre* (j + 1/2, i + 1/2)
@@ -12,23 +14,18 @@ the continuum indicator function sampled exactly on a lattice, and its
 periodic autocorrelation at a lattice displacement v is an unbiased estimate
 of the continuum S2(|v|) of the torus model -- no discretization error enters
 the two-point function, only in quantities that need the interface.
+
+The d-generic painter draws the same random numbers and paints the same pixels as the
+former 2D-only one (the images of every seed are unchanged).
 """
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
-from numba import njit
 
+from randmedia.generate.balls import digitize_balls, overlapping_ball_centers, overlapping_balls_image
 
-def poisson_intensity(phi2: float, radius: float) -> float:
-    """Number density rho giving expected disk-phase fraction phi2 (2D)."""
-    if not 0.0 < phi2 < 1.0:
-        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
-    if radius <= 0:
-        raise ValueError(f"radius must be > 0, got {radius}")
-    return -math.log1p(-phi2) / (math.pi * radius * radius)
+__all__ = ["digitize_disks", "overlapping_disk_centers", "overlapping_disks_image"]
 
 
 def overlapping_disk_centers(
@@ -52,32 +49,7 @@ def overlapping_disk_centers(
     ndarray, shape (n, 2)
         Centres (x, y) in [0, side), in pixels; n is Poisson with mean rho side^2.
     """
-    if side <= 0:
-        raise ValueError(f"side must be > 0, got {side}")
-    count = rng.poisson(poisson_intensity(phi2, radius) * side * side)
-    return rng.uniform(0.0, side, size=(count, 2))
-
-
-@njit(cache=True)
-def _paint_disks(centers, radius, out):
-    ny, nx = out.shape
-    r2 = radius * radius
-    for k in range(centers.shape[0]):
-        cx = centers[k, 0]
-        cy = centers[k, 1]
-        i_lo = int(math.floor(cy - 0.5 - radius))
-        i_hi = int(math.ceil(cy - 0.5 + radius))
-        j_lo = int(math.floor(cx - 0.5 - radius))
-        j_hi = int(math.ceil(cx - 0.5 + radius))
-        for i in range(i_lo, i_hi + 1):
-            dy = i + 0.5 - cy
-            if dy * dy > r2:
-                continue
-            row = i % ny
-            for j in range(j_lo, j_hi + 1):
-                dx = j + 0.5 - cx
-                if dx * dx + dy * dy <= r2:
-                    out[row, j % nx] = 1
+    return overlapping_ball_centers(rng, side, radius, phi2, 2)
 
 
 def digitize_disks(centers: np.ndarray, radius: float, shape: tuple[int, int]) -> np.ndarray:
@@ -88,7 +60,7 @@ def digitize_disks(centers: np.ndarray, radius: float, shape: tuple[int, int]) -
     centers : array_like, shape (n, 2)
         Disk centres (x, y) in pixel units; periodic images are painted.
     radius : float
-        Disk radius, in pixels.
+        Disk radius (> 0), in pixels.
     shape : tuple of int
         Image shape (rows ny, columns nx).
 
@@ -97,10 +69,9 @@ def digitize_disks(centers: np.ndarray, radius: float, shape: tuple[int, int]) -
     ndarray of uint8, shape ``shape``
         1 = disk phase 2, 0 = void phase 1.
     """
-    centers = np.ascontiguousarray(centers, dtype=np.float64).reshape(-1, 2)
-    out = np.zeros(shape, dtype=np.uint8)
-    _paint_disks(centers, float(radius), out)
-    return out
+    if len(shape) != 2:
+        raise ValueError(f"expected a 2D image shape (ny, nx), got {shape}")
+    return digitize_balls(centers, radius, shape)
 
 
 def overlapping_disks_image(
@@ -124,5 +95,4 @@ def overlapping_disks_image(
     ndarray of uint8, shape (side, side)
         Axes (y, x); 1 = disk phase 2, 0 = void phase 1.
     """
-    centers = overlapping_disk_centers(rng, side, radius, phi2)
-    return digitize_disks(centers, radius, (side, side))
+    return overlapping_balls_image(rng, side, radius, phi2, 2)

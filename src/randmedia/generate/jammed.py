@@ -84,7 +84,7 @@ from dataclasses import asdict, dataclass, field, replace
 import numpy as np
 
 from randmedia.generate import packing_lp, refuse_invalid
-from randmedia.generate.rsa import ball_volume
+from randmedia.theory.balls import ball_volume
 from randmedia.checkpoint import array_digest, checkpoint_key
 from randmedia.periodic import Cell, pairs_within
 from randmedia.periodic import min_pair_distance as _min_distance
@@ -215,7 +215,7 @@ def packing_fraction(positions: np.ndarray, box: np.ndarray, diameter: float = 1
         The packing fraction phi.
     """
     positions = np.asarray(positions)
-    return positions.shape[0] * ball_volume(positions.shape[1], diameter) / abs(np.linalg.det(box))
+    return positions.shape[0] * ball_volume(diameter / 2.0, positions.shape[1]) / abs(np.linalg.det(box))
 
 
 def validate_packing_input(n: int, phi: float, dim: int, diameter: float = 1.0) -> None:
@@ -540,7 +540,7 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
             return True
         if params.volume_tolerance_start > 0 and len(accepted) >= 3:
             # |V_t - V_(t-2)| / V_0 with V = n v_1 / phi and V_0 = start_volume
-            spheres = n * ball_volume(dim, diameter)
+            spheres = n * ball_volume(diameter / 2.0, dim)
             if abs(spheres / accepted[-1] - spheres / accepted[-3]) <= params.volume_tolerance_start * start_volume:
                 return True
         if trust < MIN_TRUST:

@@ -53,7 +53,7 @@ import numpy as np
 from numba import njit
 
 from randmedia.generate import refuse_invalid
-from randmedia.generate.rsa import ball_volume
+from randmedia.theory.balls import ball_volume
 
 #: densest packing fractions (hexagonal in 2D, fcc in 3D): the spheres never outgrow them
 _DENSEST = {2: math.pi / (2 * math.sqrt(3)), 3: math.pi / math.sqrt(18)}
@@ -375,7 +375,7 @@ def packing_fraction_of(n: int, dim: int, side: float, sigma: float) -> float:
     float
         The packing fraction phi.
     """
-    return n * ball_volume(dim, sigma) / side**dim
+    return n * ball_volume(sigma / 2.0, dim) / side**dim
 
 
 class GrowingSpheres:
@@ -400,7 +400,7 @@ class GrowingSpheres:
         n = int(n)
         self.n, self.dim = n, dim
         self.side = float(n) ** (1.0 / dim)
-        self.sigma_max = (_DENSEST[dim] * self.side**dim / (n * ball_volume(dim, 1.0))) ** (1.0 / dim)
+        self.sigma_max = (_DENSEST[dim] * self.side**dim / (n * ball_volume(0.5, dim))) ** (1.0 / dim)
         self.nc = int(self.side / self.sigma_max)
         if self.nc < 3:
             raise ValueError(f"{n} spheres are too few for the cell list of the LS compression "

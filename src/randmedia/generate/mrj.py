@@ -47,7 +47,8 @@ from randmedia.generate import inflation, packing_lp
 from randmedia.generate.jammed import (ConstructionError, JammedPacking, TJParameters, jam,
                                        packing_fraction, validate_packing_input)
 from randmedia.generate.lubachevsky_stillinger import LSParameters, compress
-from randmedia.generate.rsa import ball_volume, random_sequential_addition
+from randmedia.generate.rsa import random_sequential_addition
+from randmedia.theory.balls import ball_volume
 from randmedia.resumable import ResumableRun
 
 #: per-LP keys of the inflation stage kept in the packing's history
@@ -81,7 +82,7 @@ class DiluteTJ:
 
     def tj_parameters(self, n: int, dim: int = 3, diameter: float = 1.0) -> TJParameters:
         """The :class:`TJParameters` of the route for ``n`` spheres (class docstring)."""
-        start_side = (n * ball_volume(dim, diameter) / self.initial_phi) ** (1.0 / dim)
+        start_side = (n * ball_volume(diameter / 2.0, dim) / self.initial_phi) ** (1.0 / dim)
         strain = self.strain_max * diameter / start_side
         return TJParameters(influence_gap=self.influence_gap, max_normal_strain=strain,
                             max_shear_strain=strain, translation_max=self.translation_max,
@@ -104,7 +105,7 @@ class MRJProtocol:
     polish: TJParameters = field(default_factory=lambda: TJParameters(
         influence_gap=0.1, max_normal_strain=3e-3, max_shear_strain=3e-3, tolerance=1e-10,
         max_lps=500, shrink_with_trust=True, backend="highs-hipo-vertex"))
-    route: str = "compression"
+    route: str = "dilute"
     dilute: DiluteTJ = field(default_factory=DiluteTJ)
 
     def __post_init__(self):
@@ -117,7 +118,7 @@ class MRJProtocol:
         return cls(LSParameters(**section.get("compression", {})),
                    inflation.InflationParameters(**section.get("inflation", {})),
                    TJParameters(**section["polish"], shrink_with_trust=True),
-                   route=section.get("route", "compression"),
+                   route=section.get("route", "dilute"),
                    dilute=DiluteTJ(**section.get("dilute", {})))
 
     def as_dict(self) -> dict:

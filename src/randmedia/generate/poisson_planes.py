@@ -29,7 +29,10 @@ area per volume is S_V = lambda_L / kappa_d (Cauchy-Crofton; 3D: P_L = S_V/2),
 and a plane piece is an interface iff the two cells it separates differ in
 colour (probability 2 phi1 phi2), so the specific surface is
 s = 2 phi1 phi2 / (a kappa_d): 4 phi1 phi2 / a in 3D and pi phi1 phi2 / a in
-2D (Eq. 22), both equal to -S2'(0) d omega_d / omega_(d-1) (Eq. 7).
+2D (Eq. 22), both equal to -S2'(0) d omega_d / omega_(d-1) (Eq. 7). These exact
+formulas (kappa_d, S_V, s) live in :mod:`randmedia.theory.plane_process` (the generator takes
+kappa_d from there), the tessellation's exact descriptors in
+:mod:`randmedia.theory.poisson_planes`.
 
 Digitization. Voxel (k, i, j) of an image of shape (nz, ny, nx) takes the
 colour of the cell containing its centre (j + 1/2, i + 1/2, k + 1/2); the image
@@ -70,47 +73,8 @@ from dataclasses import dataclass
 import numpy as np
 from numba import njit
 
-
-def crossing_fraction(dim: int) -> float:
-    """kappa_d = E|u.e| for u uniform on S^(d-1): Gamma(d/2) / (sqrt(pi) Gamma((d+1)/2));
-    2/pi for d = 2, 1/2 for d = 3."""
-    if dim not in (2, 3):
-        raise ValueError(f"dim must be 2 or 3, got {dim!r}")
-    return math.gamma(dim / 2) / (math.sqrt(math.pi) * math.gamma((dim + 1) / 2))
-
-
-def _check(phi2: float | None, a: float) -> None:
-    if phi2 is not None and not 0.0 < phi2 < 1.0:
-        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
-    if not a > 0:
-        raise ValueError(f"a must be > 0, got {a}")
-
-
-def plane_area_density(a: float, dim: int) -> float:
-    """S_V: hyperplane area per volume giving lambda_L = 1/a crossings per unit length."""
-    _check(None, a)
-    return 1.0 / (a * crossing_fraction(dim))
-
-
-def specific_surface(phi2: float, a: float, dim: int) -> float:
-    """s = 2 phi1 phi2 S_V = 2 phi1 phi2 / (a kappa_d): 4 phi1 phi2 / a (3D), Eq. (22) (2D).
-
-    Parameters
-    ----------
-    phi2 : float
-        Volume fraction of phase 2, in (0, 1).
-    a : float
-        Correlation length a = 1 / lambda_L (> 0), in pixels.
-    dim : int
-        Dimension d, 2 or 3.
-
-    Returns
-    -------
-    float
-        Specific surface s (interface area per volume), in 1 / (unit of ``a``).
-    """
-    _check(phi2, a)
-    return 2.0 * phi2 * (1.0 - phi2) * plane_area_density(a, dim)
+from randmedia.numerics.checks import check_fraction, check_positive
+from randmedia.theory.plane_process import crossing_fraction
 
 
 @dataclass(frozen=True)
@@ -147,7 +111,7 @@ def poisson_planes(rng: np.random.Generator, shape: tuple[int, ...], a: float) -
     """
     shape = tuple(int(n) for n in shape)
     dim = len(shape)
-    _check(None, a)
+    check_positive(a, "a")
     kappa = crossing_fraction(dim)
     if min(shape) < 1:
         raise ValueError(f"image shape must be positive, got {shape}")
@@ -320,7 +284,8 @@ def poisson_plane_image(rng: np.random.Generator, shape: tuple[int, ...], a: flo
     ndarray of uint8, shape ``shape``
         1 = phase 2, 0 = phase 1.
     """
-    _check(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
     planes = poisson_planes(rng, shape, a)
     labels = cell_labels(planes, shape, rng)
     colour = (rng.random(int(labels.max()) + 1) < phi2).astype(np.uint8)

@@ -16,19 +16,13 @@ in batches from the sample's numpy Generator, so the configuration depends only 
 
 from __future__ import annotations
 
-import math
-
 import numpy as np
 from numba import njit
 
+from randmedia.theory import balls
+
 #: saturation packing fractions of RSA (Torquato, Uche & Stillinger, PRE 74, 061308 (2006))
 RSA_SATURATION = {2: 0.547, 3: 0.385}
-
-
-def ball_volume(dim: int, diameter: float = 1.0) -> float:
-    """Volume of a d-ball of the given diameter."""
-    radius = diameter / 2.0
-    return math.pi ** (dim / 2) / math.gamma(dim / 2 + 1) * radius**dim
 
 
 @njit(cache=True)
@@ -114,7 +108,7 @@ def random_sequential_addition(rng: np.random.Generator, n: int, phi: float, dim
         raise ValueError(f"RSA start packing fraction must lie in (0, {limit:.3f}) in {dim}D "
                          f"(0.9 x the RSA saturation fraction), got {phi}")
     n = int(n)
-    side = (n * ball_volume(dim, diameter) / phi) ** (1.0 / dim)
+    side = (n * balls.ball_volume(diameter / 2.0, dim) / phi) ** (1.0 / dim)
     n_cells = max(1, int(side // diameter))
     if n_cells < 3:
         n_cells = 1  # fewer than 3 cells per side: one cell, every pair is checked

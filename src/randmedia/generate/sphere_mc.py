@@ -77,10 +77,12 @@ POTENTIALS = ("lj", "udd", "udd_flipped", "uddpar", "uddpar_cubed", "udc", "ucc"
 @dataclass(frozen=True)
 class Potential:
     """A pair potential of Eqs. (11)-(12): ``name`` in :data:`POTENTIALS`, ``coupling``
-    alpha (udd, udd_flipped, uddpar, uddpar_cubed), gamma (udc) or beta (ucc), LJ depth ``epsilon`` (0: no LJ)."""
+    alpha (udd, udd_flipped, uddpar, uddpar_cubed), gamma (udc) or beta (ucc), LJ depth ``epsilon`` (0: no LJ).
+    ``coupling`` has no default: it differs between the systems of ``sphere2019.fluids.systems``
+    (tests/test_defaults.py)."""
 
     name: str
-    coupling: float = 1.0
+    coupling: float
     epsilon: float = 1.0
 
     def __post_init__(self):
@@ -346,12 +348,16 @@ def delta_energy(positions: np.ndarray, i: int, new: np.ndarray, potential: Pote
 
 @dataclass(frozen=True)
 class MCSchedule:
-    """Lengths of a run, in sweeps (1 sweep = N trial moves); see the module docstring."""
+    """Lengths of a run, in sweeps (1 sweep = N trial moves); see the module docstring.
+
+    The defaults are those of the config section ``sphere2019.fluids``; the run lengths,
+    ``count_interval`` included, differ between its ``runs`` and have none
+    (tests/test_defaults.py)."""
 
     equilibration_sweeps: int
     production_sweeps: int
     frame_interval: int
-    count_interval: int = 1
+    count_interval: int
     target_acceptance: float = 0.4
     tune_fraction: float = 0.5
     initial_step: float = 0.5

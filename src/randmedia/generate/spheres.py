@@ -5,7 +5,8 @@ diameter D (= 1 in the files; contract PARTICLE_CONFIG):
 
 * ``overlapping``: the Boolean model -- centres form a Poisson point process of
   intensity rho in a periodic cubic box; the spheres (diameter D) may overlap
-  and cover the volume fraction phi = 1 - exp(-rho pi D^3 / 6) (Sec. III A).
+  and cover the volume fraction phi = 1 - exp(-rho pi D^3 / 6) (Sec. III A;
+  rho from :func:`randmedia.theory.balls.poisson_intensity`).
   The number of centres in a box of volume V is Poisson distributed with mean
   rho V (not fixed), so that every window statistic of the periodic sample is
   exactly that of the infinite Poisson process as long as the window fits in
@@ -24,6 +25,8 @@ import math
 
 import numpy as np
 
+from randmedia.theory.balls import ball_volume, poisson_intensity
+
 #: sites of the conventional cubic cell (fractions of the cubic lattice constant a)
 LATTICE_BASIS = {
     "fcc": np.array([[0.0, 0.0, 0.0], [0.5, 0.5, 0.0], [0.5, 0.0, 0.5], [0.0, 0.5, 0.5]]),
@@ -34,19 +37,6 @@ NEAREST_NEIGHBOUR = {"fcc": 1.0 / math.sqrt(2.0), "bcc": math.sqrt(3.0) / 2.0}
 #: covering radius (largest distance of a point of space to the nearest site) in units of a:
 #: fcc octahedral hole at (a/2, 0, 0); bcc "deep hole" at (a/2, a/4, 0) (Torquato, PRE 82, 056109)
 COVERING_RADIUS = {"fcc": 0.5, "bcc": math.sqrt(5.0) / 4.0}
-
-
-def sphere_volume(diameter: float = 1.0) -> float:
-    return math.pi * diameter**3 / 6.0
-
-
-def overlapping_intensity(phi: float, diameter: float = 1.0) -> float:
-    """rho with 1 - exp(-rho v_D) = phi (Boolean model, Sec. III A)."""
-    if not 0.0 < phi < 1.0:
-        raise ValueError(f"phi must lie in (0, 1), got {phi}")
-    if diameter <= 0:
-        raise ValueError(f"diameter must be > 0, got {diameter}")
-    return -math.log1p(-phi) / sphere_volume(diameter)
 
 
 def overlapping_box_side(phi: float, n_mean: float, diameter: float = 1.0) -> float:
@@ -64,11 +54,11 @@ def overlapping_box_side(phi: float, n_mean: float, diameter: float = 1.0) -> fl
     Returns
     -------
     float
-        Box side L = (n_mean / rho)^(1/3).
+        Box side L = (n_mean / rho)^(1/3), rho = -ln(1 - phi) / v1(D/2).
     """
     if n_mean <= 0:
         raise ValueError(f"n_mean must be > 0, got {n_mean}")
-    return (n_mean / overlapping_intensity(phi, diameter)) ** (1.0 / 3.0)
+    return (n_mean / poisson_intensity(phi, diameter / 2.0, 3)) ** (1.0 / 3.0)
 
 
 def overlapping_spheres(rng: np.random.Generator, phi: float, n_mean: float,
@@ -108,7 +98,7 @@ def lattice_constant(lattice: str, diameter: float = 1.0) -> float:
 def lattice_packing_fraction(lattice: str) -> float:
     """phi of touching spheres: fcc pi/(3 sqrt 2), bcc pi sqrt(3)/8."""
     a = lattice_constant(lattice)
-    return len(LATTICE_BASIS[lattice]) * sphere_volume() / a**3
+    return len(LATTICE_BASIS[lattice]) * ball_volume(0.5, 3) / a**3
 
 
 def lattice_covering_radius(lattice: str, diameter: float = 1.0) -> float:

@@ -10,7 +10,7 @@ Eq. (23),
     E = sum_b [S2_b - target_b]^2 ,
 
 summed over radial bins b = 1..n_b of width one pixel with 0 < r <= l_c
-(bins are those of :class:`randmedia.describe.two_phase.RadialBinning`, so the
+(bins are those of :class:`randmedia.numerics.radial.RadialBinning`, so the
 construction targets exactly what the S2 estimator measures, sampled in *all*
 directions). The target of a bin is the exact average of the target S2 over
 the lattice displacements in that bin. Differences of S2 and of chi_V are
@@ -84,8 +84,8 @@ temperature, with the energy of Eq. (23) summed over every bin
 0 < r <= ``long_range_cutoff_over_L`` L, bring it to ~10^-5 at the cost of one
 shell-count table of that range (built by FFT, :func:`~randmedia.generate.yt_stencil.shell_counts`) -- the
 trial cost stays O(bins). The cutoff stops short of L/2 so that the pending-flip
-cells (:class:`_PendingCells`) stay a few pixels wide. Off by default
-(``long_range_stages = 0``); the paper config runs two.
+cells (:class:`_PendingCells`) stay a few pixels wide. No default: the paper config
+runs two, the 3D study none (``long_range_stages = 0``).
 """
 
 from __future__ import annotations
@@ -101,10 +101,10 @@ from typing import Callable
 import numpy as np
 from numba import njit
 
-from randmedia.describe.two_phase import RadialBinning, periodic_autocorrelation
 from randmedia.checkpoint import array_digest, checkpoint_key
 from randmedia.generate import refuse_invalid
 from randmedia.generate.yt_stencil import Stencil, apply_flips_kernel, shell_counts
+from randmedia.numerics.radial import RadialBinning, periodic_autocorrelation
 from randmedia.resumable import ResumableRun
 
 # face neighbours (dz, dy, dx) of the interface test: the 2D four first, in the order the
@@ -117,9 +117,13 @@ class ConstructionError(RuntimeError):
     """The construction did not reach the required Delta S2."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class AnnealingSchedule:
-    """Constants of the annealing schedule (see the module docstring)."""
+    """Constants of the annealing schedule (see the module docstring).
+
+    The defaults are those of the config sections ``debye2020.media.schedule`` and
+    ``debye3d.media.schedule`` (schema ``workflow/schemas/yt_schedule.schema.yaml``);
+    ``long_range_stages``, which the two set differently, has none (tests/test_defaults.py)."""
 
     trials_per_pixel: float = 40.0
     initial_temperature: float = 0.005
@@ -128,7 +132,7 @@ class AnnealingSchedule:
     refine_fraction: float = 0.1
     tolerance: float = 2e-4
     max_extra_stages: int = 40
-    long_range_stages: int = 0
+    long_range_stages: int
     long_range_cutoff_over_L: float = 0.49
 
     def __post_init__(self):
@@ -619,7 +623,7 @@ def construct(
     side,
     cutoff: float,
     rng: np.random.Generator,
-    schedule: AnnealingSchedule = AnnealingSchedule(),
+    schedule: AnnealingSchedule,
     *,
     checkpoint: str | os.PathLike | None = None,
     checkpoint_seconds: float = 30.0,

@@ -5,7 +5,7 @@ The construction (Ma & Torquato 2020, Sec. IV; :mod:`randmedia.generate.yeong_to
 keeps, for every voxel x, the shell counts
 
     h_x[b] = sum_{v in bin b} I(x + v),      bins b = 1 .. n_b of the estimator
-                                              (:class:`randmedia.describe.two_phase.RadialBinning`),
+                                              (:class:`randmedia.numerics.radial.RadialBinning`),
 
 so that a swap trial on the energy of Eq. (23) costs O(n_b)
 (Delta C_b = 2 (h_q[b] - h_p[b]) - 2 [|p - q| in b]) and only an accepted swap pays
@@ -38,7 +38,7 @@ import math
 import numpy as np
 from numba import njit
 
-from randmedia.describe.two_phase import RadialBinning
+from randmedia.numerics.radial import RadialBinning
 
 #: the shell-count types, smallest first: a count lies in [0, largest shell], so the
 #: smallest unsigned type holding the fullest shell holds every count (uint8 up to 255 voxels

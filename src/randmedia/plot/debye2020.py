@@ -18,7 +18,7 @@ from randmedia.describe.surface import SURFACE
 from randmedia.describe.two_phase import TWO_POINT
 from randmedia.generate import PHASE_IMAGE
 from randmedia.io import read_dataset
-from randmedia.plot.style import figure
+from randmedia.plot.style import band, figure
 from randmedia.theory.overlapping import s2_void
 
 
@@ -257,11 +257,6 @@ def _plain_log_axis(ax) -> None:
     ax.yaxis.set_minor_formatter(NullFormatter())
 
 
-def _band(ax, x, mean, sem, colour, label=None):
-    ax.fill_between(x, mean - sem, mean + sem, color=colour, alpha=0.3, lw=0)
-    ax.plot(x, mean, "-", color=colour, lw=1.0, label=label)
-
-
 def fig03(inputs, settings, log):
     """Fig. 3: F_sv(r) of the Debye media per phi2 (input ``surface``: mean +- SEM band over
     samples, level sets tuned to the exact s) and the parameter-free Eq. (24).
@@ -288,8 +283,8 @@ def fig03(inputs, settings, log):
     for label, ax, (phi2, ds) in zip("abcdefghij", axes, sorted(surface_by_phi2.items())):
         r = ds["r"].values
         keep = r >= 0.5  # the r = 0 bin is the interface deposit's own overlap with the void
-        _band(ax, r[keep] / a, a * ds["F_sv"].values[keep], a * ds["F_sv_sem"].values[keep], "C0",
-              "simulation")
+        band(ax, r[keep] / a, a * ds["F_sv"].values[keep], a * ds["F_sv_sem"].values[keep], "C0",
+             "simulation", lw=1.0)
         fine = np.linspace(0, r.max(), 300)
         ax.plot(fine / a, a * debye_surface_void(fine, phi2, a), "k--", lw=0.9, label="Eq. (24)")
         ax.set_xlabel(r"$r/a$")
@@ -327,8 +322,8 @@ def fig04(inputs, settings, log):
     for label, ax, (phi2, ds) in zip("abcdefghij", axes, sorted(surface_by_phi2.items())):
         r = ds["r"].values
         keep = r >= 1.0
-        _band(ax, r[keep] / a, a * a * ds["F_ss"].values[keep], a * a * ds["F_ss_sem"].values[keep],
-              "C0", "simulation")
+        band(ax, r[keep] / a, a * a * ds["F_ss"].values[keep], a * a * ds["F_ss_sem"].values[keep],
+             "C0", "simulation", lw=1.0)
         fine = np.linspace(0.5, r.max(), 300)
         ax.plot(fine / a, a * a * debye_surface_surface(fine, phi2, a), "k--", lw=0.9, label="Eq. (26)")
         _plain_log_axis(ax)
@@ -359,8 +354,8 @@ def fig05(inputs, settings, log):
     matplotlib.figure.Figure
         The figure (saved by the caller, :func:`randmedia.plot.rule.draw_rule_figure`).
     """
-    from randmedia.theory.debye import debye_specific_surface
-    from randmedia.theory.debye_formulas import debye_mean_pore_size, pore_p1, pore_size_density
+    from randmedia.theory.debye_formulas import (debye_mean_pore_size, debye_specific_surface, pore_p1,
+                                                 pore_size_density)
 
     pores_by_phi2 = _by_phi2(inputs["pores"], PORES)
     fits = read_dataset(inputs["fits"])
@@ -368,10 +363,10 @@ def fig05(inputs, settings, log):
     fig, (left, right) = figure(ncols=2, nrows=1, width=2 * 3.4, aspect=0.75)
     for i, (phi2, ds) in enumerate(sorted(pores_by_phi2.items())):
         x = ds["delta_bin"].values
-        scale = (1 - phi2) / debye_specific_surface(phi2, a)
+        scale = (1 - phi2) / debye_specific_surface(a, phi2)
         colour = f"C{i}"
-        _band(left, x / a, scale * ds["P"].values, scale * ds["P_sem"].values, colour,
-              rf"$\phi_2 = {phi2:g}$")
+        band(left, x / a, scale * ds["P"].values, scale * ds["P_sem"].values, colour,
+             rf"$\phi_2 = {phi2:g}$", lw=1.0)
         p0 = np.pi * phi2 / a
         p1 = float(fits["p1"].sel(phi2=phi2))
         left.plot(x / a, scale * pore_size_density(x, p0, p1, p0), "--", color=colour, lw=0.8)
@@ -379,7 +374,7 @@ def fig05(inputs, settings, log):
                   color=colour, lw=0.8)
     _plain_log_axis(left)
     left.set_ylim(1e-3, 2)
-    reach = [ds["delta_bin"].values[ds["P"].values * (1 - phi2) / debye_specific_surface(phi2, a) > 1e-3].max()
+    reach = [ds["delta_bin"].values[ds["P"].values * (1 - phi2) / debye_specific_surface(a, phi2) > 1e-3].max()
              for phi2, ds in pores_by_phi2.items()]
     left.set_xlim(0, 1.1 * max(reach) / a)
     left.set_xlabel(r"$\delta/a$")
@@ -717,11 +712,11 @@ def _section6_figure(number: int, *, a: float, media_surface=None, media_pores=N
     overlapping disks (exact Eqs. 32-39; our level-set estimates as points) and equilibrium
     hard disks (Fig. 9: our images; Figs. 10-12: Eqs. 41-43, our image estimate of P as points),
     all at ``phi2``, distances scaled by each model's exact s (Eqs. 22, 34, 40)."""
-    from randmedia.theory import debye_formulas as debye, hard_disks, overlapping
+    from randmedia.theory import debye_formulas as debye, hard_disks, hard_spheres, overlapping
 
     phi1 = 1.0 - phi2
     models = {}
-    s_debye = debye.debye_specific_surface(phi2, a)
+    s_debye = debye.debye_specific_surface(a, phi2)
     s_disks = overlapping.specific_surface(radius, phi2, dim=2)
     if number == 9:
         models["debye"] = {
@@ -736,7 +731,7 @@ def _section6_figure(number: int, *, a: float, media_surface=None, media_pores=N
             "fss": lambda r: overlapping.surface_surface(r, radius, phi2)}
         if hard_surface is not None:
             hr, hphi2 = float(hard_surface.attrs["length_scale"]), float(hard_surface.attrs["phi2"])
-            s_hard = hard_disks.specific_surface(hr, hphi2)
+            s_hard = hard_spheres.specific_surface(hr, hphi2, 2)
             rr = hard_surface["r"].values
 
             def tabulated(name, hs=hard_surface, grid=rr):
@@ -765,7 +760,7 @@ def _section6_figure(number: int, *, a: float, media_surface=None, media_pores=N
     models["overlapping_disks"] = {"s": s_disks, "curve": disks_curve, "check": disks_check}
     if hard_surface is not None:
         hr, hphi2 = float(hard_surface.attrs["length_scale"]), float(hard_surface.attrs["phi2"])
-        entry = {"s": hard_disks.specific_surface(hr, hphi2)}
+        entry = {"s": hard_spheres.specific_surface(hr, hphi2, 2)}
         if quantity == "pore":
             entry["curve"] = _hard_disk_pore_density(hr, hphi2)
             entry["check"] = (hard_pores["delta_bin"].values, hard_pores["P"].values,

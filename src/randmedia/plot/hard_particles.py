@@ -5,7 +5,8 @@ from __future__ import annotations
 import numpy as np
 
 from randmedia.plot.style import PAGE_WIDTH, figure, save_figure
-from randmedia.theory.hard_spheres import ball_volume, compressibility_factor, contact_value
+from randmedia.theory.balls import ball_volume
+from randmedia.theory.hard_spheres import compressibility_factor, contact_value
 
 
 def eos_validation_figure(frame, pooled: dict, settings, *, dim: int, phi: float,

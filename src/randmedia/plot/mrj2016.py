@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from randmedia.io import read_dataset
-from randmedia.plot.style import COLUMN_WIDTH, figure
+from randmedia.plot.style import COLUMN_WIDTH, band, figure
 
 COLOURS = {"overlapping": "0.25", "equilibrium": "C0", "mrj": "C3", "mrj_large": "C3",
            "fcc": "C2", "bcc": "C4"}
@@ -34,12 +34,6 @@ def _load(inputs, name, log=None):
             log.warning("%s not available: left out of the figure", name)
         return None
     return read_dataset(path)
-
-
-def _band(ax, x, mean, sem, colour, label=None, **kwargs):
-    ax.plot(x, mean, color=colour, label=label, **kwargs)
-    if sem is not None and np.any(np.isfinite(sem)):
-        ax.fill_between(x, mean - sem, mean + sem, color=colour, alpha=0.3, lw=0)
 
 
 def _phi_label(ds):
@@ -85,7 +79,7 @@ def _correlation_figure(inputs, settings, log, *, which):
         else:
             r = ds["r"].values
             keep = r > 0 if which in ("Fss", "Fsv2", "Fss2") else slice(None)
-            _band(ax, r[keep], ds[f"{variable}_mean"].values[keep], ds[f"{variable}_sem"].values[keep],
+            band(ax, r[keep], ds[f"{variable}_mean"].values[keep], ds[f"{variable}_sem"].values[keep],
                   colour, label=f"{LABELS[system]} ({ds.sizes['sample']} samples)")
             phi, label = float(np.mean(ds["phi"].values)), _phi_label(ds)
             s = 6.0 * phi
@@ -122,7 +116,7 @@ def _correlation_figure(inputs, settings, log, *, which):
             if near.sum() < 3:
                 continue
             inset = ax.inset_axes([0.45, 0.45, 0.3, 0.4])
-            _band(inset, r[near], ds[f"{variable}_mean"].values[near], ds[f"{variable}_sem"].values[near],
+            band(inset, r[near], ds[f"{variable}_mean"].values[near], ds[f"{variable}_sem"].values[near],
                   COLOURS[system])
             inset.axvline(inset_at, color="0.5", ls=":", lw=0.6)
             inset.tick_params(labelsize=5)
@@ -238,7 +232,8 @@ def fig06(inputs, settings, log):
     Parameters
     ----------
     inputs : dict
-        ``spectral_{system}``, ``correlation_{system}`` for ``mrj_large`` and ``equilibrium`` (optional).
+        ``spectral_{system}``, ``correlation_{system}`` for ``mrj_large`` (else ``mrj``) and
+        ``equilibrium`` (optional).
     settings : dict
         ``spectral`` (its ``k_max``, units of 1/D) and ``overlapping_phi``: sphere volume fraction
         of the overlapping spheres (exact curves).
@@ -255,7 +250,10 @@ def fig06(inputs, settings, log):
     k_max = settings["spectral"]["k_max"]
     fig, axes = figure(nrows=3, ncols=1, aspect=0.62, sharex=True)
     zeros = form_factor_zeros(k_max)
-    panels = [("mrj_large", axes[0]), ("equilibrium", axes[1])]
+    # the paper's top panel is its N = 10 000 MRJ packings; without them (mrj2016.mrj.mrj_large
+    # .n_samples = 0) the N = 2000 packings, labelled with their N, so the panel is never empty
+    mrj = "mrj_large" if any(f"{kind}_mrj_large" in inputs for kind in ("spectral", "correlation")) else "mrj"
+    panels = [(mrj, axes[0]), ("equilibrium", axes[1])]
     for system, ax in panels:
         title = LABELS[system]
         spec = _load(inputs, f"spectral_{system}", log)
@@ -271,7 +269,7 @@ def fig06(inputs, settings, log):
             kk = np.nanmean(spec["k_mean"].values, axis=0)[good]
             ax.errorbar(kk, spec["chi_mean"].values[good], yerr=spec["chi_sem"].values[good], fmt="x",
                         ms=2.5, color="k", lw=0.6, label=r"$|\tilde J(\mathbf{k})|^2/V$ (Eq. 14)")
-            title = (rf"{LABELS[system]}, $\phi = {float(np.mean(spec['eta'].values)):.3f}$, "
+            title = (rf"{LABELS[system]}" "\n" rf"$\phi = {float(np.mean(spec['eta'].values)):.3f}$, "
                      rf"$N = {float(np.mean(spec['n'].values)):.0f}$, {spec.sizes['sample']} samples")
             if system == "equilibrium":
                 s0 = _liquid_s0(float(np.mean(spec["eta"].values)), log)
@@ -288,7 +286,8 @@ def fig06(inputs, settings, log):
     axes[2].axhline(float(overlapping_spectral_density([0.0], phi)[0]), color="0.5", ls="--", lw=0.8,
                     label=r"$\tilde\chi_V(0)$")
     axes[2].set_ylabel(r"$\tilde\chi_V(k)/D^3$")
-    axes[2].legend(loc="upper right", fontsize=6, title=rf"$\phi = {phi:g}$", title_fontsize=6)
+    # below the top of the curve (the horizontal line of chi_V(0) runs along the top)
+    axes[2].legend(loc="center right", fontsize=6, title=rf"$\phi = {phi:g}$", title_fontsize=6)
     for ax in axes[:2]:
         for z in zeros:
             ax.axvline(z, color="0.5", ls="--", lw=0.6)
@@ -405,7 +404,8 @@ def fig08(inputs, settings, log):
     matplotlib.figure.Figure
         The figure.
     """
-    from randmedia.theory.overlapping import exclusion_probability, number_density
+    from randmedia.theory.balls import poisson_intensity
+    from randmedia.theory.overlapping import exclusion_probability
 
     fig, ax = figure(aspect=0.8)
     x = np.linspace(0, 1.6, 400)
@@ -415,7 +415,7 @@ def fig08(inputs, settings, log):
         ds = _load(inputs, f"points_{system}", log)
         if ds is None:
             continue
-        rho = (number_density(settings["overlapping_phi"], RADIUS, 3) if system == "overlapping"
+        rho = (poisson_intensity(settings["overlapping_phi"], RADIUS, 3) if system == "overlapping"
                else float(np.mean(ds["rho"].values)))
         lam = rho ** (-1.0 / 3.0)
         if system == "equilibrium":
@@ -462,7 +462,7 @@ def fig09(inputs, settings, log):
     """
     from scipy.stats import norm, poisson
 
-    from randmedia.theory.overlapping import number_density
+    from randmedia.theory.balls import poisson_intensity
 
     fig, axes = figure(nrows=3, ncols=1, aspect=0.62, sharex=True)
     x = np.linspace(-4, 4, 300)
@@ -493,7 +493,7 @@ def fig09(inputs, settings, log):
                     mfc=colour if (gauss and system != "overlapping") else "none",
                     label=rf"$R = {R:g}D = {R / lam:.2f}\lambda$")
             if system == "overlapping":  # exact Poisson distribution
-                mu = number_density(settings["overlapping_phi"], RADIUS, 3) * 4 * math.pi * R**3 / 3
+                mu = poisson_intensity(settings["overlapping_phi"], RADIUS, 3) * 4 * math.pi * R**3 / 3
                 nn = np.arange(max(0, int(mu - 5 * math.sqrt(mu))), int(mu + 5 * math.sqrt(mu)) + 2)
                 ax.plot((nn - mu) / math.sqrt(mu), math.sqrt(mu) * poisson.pmf(nn, mu), "--",
                         color=colour, lw=0.7)

@@ -19,7 +19,7 @@ the rule's input ``code``, derived from the script's imports, holds it) and call
 
 from __future__ import annotations
 
-from randmedia.plot.style import save_figure
+from randmedia.plot.style import empty_panels, save_figure
 
 
 def draw_rule_figure(figures: dict, snakemake, log) -> None:
@@ -55,4 +55,6 @@ def draw_rule_figure(figures: dict, snakemake, log) -> None:
                          f"the rule's PDF outputs are {sorted(pdfs)}")
     for name, fig in drawn.items():
         log.info("%s.%s -> %s", draw.__module__, draw.__name__, pdfs[name])
+        for index in empty_panels(fig):  # read by tests/test_figures.py on the quick run's logs
+            log.warning("%s: panel %d of %d shows no data", pdfs[name], index + 1, len(fig.axes))
         save_figure(fig, pdfs[name])

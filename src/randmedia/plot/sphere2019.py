@@ -21,7 +21,7 @@ import xarray as xr
 from randmedia.describe.sphere_points import CAP_VARIANCE
 from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of
 from randmedia.io import read_dataset
-from randmedia.plot.style import PAGE_WIDTH, figure
+from randmedia.plot.style import PAGE_WIDTH, band, figure
 from randmedia.theory.sphere_caps import poisson_variance, uniform_variance
 
 VIEW = (np.deg2rad(20.0), np.deg2rad(30.0))  # elevation, azimuth of the viewer
@@ -90,12 +90,6 @@ def _circle(centre, radius, **kwargs):
     from matplotlib.patches import Circle
 
     return Circle(centre, radius, **kwargs)
-
-
-def _band(ax, x, y, sem, label=None, colour=None, **kwargs):
-    line, = ax.plot(x, y, label=label, color=colour, **kwargs)
-    ax.fill_between(x, y - sem, y + sem, color=line.get_color(), alpha=0.25, lw=0)
-    return line
 
 
 def _scaled(ds: xr.Dataset, variant: str = "random_centres"):
@@ -223,7 +217,7 @@ def fig02(inputs, settings, log):
     inset = ax.inset_axes([0.45, 0.45, 0.5, 0.45])
     for ds, name, colour in ((ico, "icosahedral", "C0"), (fib, "Fibonacci", "C1")):
         a, scaled, sem, rho = _scaled(ds)
-        _band(ax, a * np.sqrt(rho), scaled, sem, label=name, colour=colour)
+        band(ax, a * np.sqrt(rho), scaled, sem, colour, name, alpha=0.25)
         sigma2 = ds["sigma2"].sel(variant="random_centres").values
         inset.plot(a, sigma2, color=colour)
     ax.set_xlabel(r"$a\rho^{1/2}$")
@@ -274,7 +268,7 @@ def fig03(inputs, settings, log):
             (bottom, poisson, poisson_variance, "Poisson (grand canonical), Eq. (7)", "C2")):
         a, scaled, sem, rho = _scaled(ds)
         R = float(ds.attrs["R"])
-        _band(ax, a / R, scaled, sem, label="simulation", colour=colour)
+        band(ax, a / R, scaled, sem, colour, "simulation", alpha=0.25)
         fine = np.linspace(a[0], R, 200)
         s = 2 * np.pi * R**2 * (1 - np.sqrt(1 - (fine / R) ** 2))
         ax.plot(fine / R, theory(fine, R, rho) / (rho * s), "k--", lw=0.8, label=label)
@@ -343,7 +337,7 @@ def fig04(inputs, settings, log):
     for k, (system, ds) in enumerate(descriptors.items()):
         a, scaled, sem, rho = _scaled(ds)
         keep = a >= a_min
-        _band(ax, a[keep] * np.sqrt(rho), scaled[keep], sem[keep], label=_fluid_label(ds), colour=f"C{k}")
+        band(ax, a[keep] * np.sqrt(rho), scaled[keep], sem[keep], f"C{k}", _fluid_label(ds), alpha=0.25)
         sigma2 = ds["sigma2"].sel(variant="random_centres").values
         inset.loglog(a[keep], sigma2[keep] / sigma2[-1], color=f"C{k}")
     if descriptors:
@@ -393,8 +387,8 @@ def _fig05_alpha(descriptors: dict[str, xr.Dataset], *, a_min: float = 1.0):
     for k, (system, ds) in enumerate(descriptors.items()):
         a, scaled, sem, rho = _scaled(ds)
         keep = a >= a_min
-        _band(ax, a[keep] * np.sqrt(rho), scaled[keep], sem[keep],
-              label=_fluid_label(ds, True), colour=f"C{k}")
+        band(ax, a[keep] * np.sqrt(rho), scaled[keep], sem[keep], f"C{k}", _fluid_label(ds, True),
+             alpha=0.25)
     if descriptors:
         R = float(next(iter(descriptors.values())).attrs["R"])
         ax.set_title(rf"$U_{{dd\parallel}}$, $R = {R:g}$, $\rho = {rho:.3g}$")
@@ -471,8 +465,8 @@ def _fig07_g2(descriptors: dict[str, xr.Dataset]):
     """Fig. 7 from the descriptor files of the fluids."""
     fig, ax = figure()
     for k, (system, ds) in enumerate(descriptors.items()):
-        _band(ax, ds["x"].values, ds["g2"].values, np.nan_to_num(ds["g2_sem"].values),
-              label=_fluid_label(ds, True), colour=f"C{k}", lw=0.9)
+        band(ax, ds["x"].values, ds["g2"].values, np.nan_to_num(ds["g2_sem"].values), f"C{k}",
+             _fluid_label(ds, True), alpha=0.25, lw=0.9)
     ax.axhline(1.0, color="0.5", lw=0.6, ls=":")
     ax.set_xlabel(r"$x$ (geodesic distance)")
     ax.set_ylabel(r"$g_2(x)$")

@@ -6,8 +6,8 @@ cells -- exactly the same S2, a different microstructure, observed in a non-peri
 (``planes``) -- and digitized overlapping spheres (``spheres``), whose descriptors are known
 exactly in 3D (:mod:`randmedia.theory.overlapping`) and validate every estimator first.
 
-This module turns a system's parameters (one entry of the workflow's system table) and its
-sample images into the descriptor datasets: which estimator, which exact reference, which
+This module turns a system's parameters (one entry of the workflow's system table,
+:func:`randmedia.config.debye3d_systems`) and its sample images into the descriptor datasets: which estimator, which exact reference, which
 ranges (in units of the system's length: a for the Debye media, R for the spheres).
 """
 
@@ -19,21 +19,18 @@ from typing import Callable, Mapping
 import numpy as np
 import xarray as xr
 
-from randmedia.describe.two_phase import RadialBinning, s2_discrepancy, two_point_function
+from randmedia.config import debye3d_system_length, debye3d_window_margin
+from randmedia.describe.two_phase import s2_discrepancy, two_point_function
 from randmedia.describe.window import window_binning, window_s2_samples
 from randmedia.generate.voxel_images import VOXEL_IMAGE
 from randmedia.io import read_dataset
+from randmedia.numerics.radial import RadialBinning
 from randmedia.stats import standard_error
 from randmedia.theory import overlapping
 from randmedia.theory.debye import debye_s2
 
 #: the three kinds of 3D media (module docstring)
 KINDS = ("yt", "planes", "spheres")
-
-
-def system_length(params: Mapping) -> float:
-    """The system's length unit in voxels: a (Debye media) or the sphere radius R."""
-    return float(params["radius"] if params["kind"] == "spheres" else params["a"])
 
 
 def read_voxel_images(paths) -> tuple[np.ndarray, bool]:
@@ -121,44 +118,6 @@ def s2_dataset(images: np.ndarray, periodic: bool, params: Mapping) -> xr.Datase
     return s2
 
 
-def systems(section: Mapping) -> dict[str, dict]:
-    """The study's systems from the config section ``debye3d``: name -> parameters.
-
-    ``yt_phi{phi2}`` for every configured phi2 (N, a, l_c, schedule of ``media``),
-    ``planes_phi{phi2}`` beside each when ``poisson_planes.n_samples`` > 0 (same N, a),
-    and ``spheres_phi{phi2}`` from ``overlapping_spheres``. Every entry carries ``kind``,
-    ``phi2``, ``N``, ``n_samples`` and its length (``a`` or ``radius``) and ``s2_r_max`` =
-    ``s2.r_max_over_length`` x that length, in voxels.
-
-    Parameters
-    ----------
-    section : Mapping
-        The validated ``debye3d`` config section.
-
-    Returns
-    -------
-    dict
-        System name -> parameter dict.
-    """
-    media, planes, spheres = section["media"], section["poisson_planes"], section["overlapping_spheres"]
-    ratio = float(section["s2"]["r_max_over_length"])
-    out = {}
-    for phi2 in media["phi2"]:
-        common = {"phi2": float(phi2), "N": int(media["N"]), "a": float(media["a"])}
-        out[f"yt_phi{phi2:g}"] = {"kind": "yt", **common, "lc": float(media["lc"]),
-                                  "schedule": dict(media["schedule"]),
-                                  "n_samples": int(media["n_samples"])}
-        if planes["n_samples"] > 0:
-            out[f"planes_phi{phi2:g}"] = {"kind": "planes", **common,
-                                          "n_samples": int(planes["n_samples"])}
-    out[f"spheres_phi{spheres['phi2']:g}"] = {
-        "kind": "spheres", "phi2": float(spheres["phi2"]), "N": int(spheres["N"]),
-        "radius": float(spheres["radius"]), "n_samples": int(spheres["n_samples"])}
-    for params in out.values():
-        params["s2_r_max"] = ratio * system_length(params)
-    return out
-
-
 #: kinds whose periodic level-set descriptors (surface functions, pores, chords) are computed.
 #: The Poisson-plane windows are not periodic and these estimators wrap around the image (the
 #: seam adds ~6 phi1 phi2 / L of interface per volume); they get S2, the surface functions and
@@ -177,11 +136,11 @@ def is_window(params: Mapping) -> bool:
 def exact_specific_surface(params: Mapping) -> float:
     """The exact specific surface of the system: 4 phi1 phi2 / a for the Debye media (3D,
     Eq. 7 with Eq. 21) and that of overlapping spheres (Eq. 34 in 3D)."""
-    from randmedia.theory.debye_formulas import debye_surface_specific
+    from randmedia.theory.debye_formulas import debye_specific_surface
 
     if params["kind"] == "spheres":
         return float(overlapping.specific_surface(float(params["radius"]), float(params["phi2"]), dim=3))
-    return float(debye_surface_specific(float(params["phi2"]), float(params["a"]), dim=3))
+    return float(debye_specific_surface(float(params["a"]), float(params["phi2"]), dim=3))
 
 
 def level_set_datasets(images: np.ndarray, params: Mapping, interface: Mapping,
@@ -195,7 +154,7 @@ def level_set_datasets(images: np.ndarray, params: Mapping, interface: Mapping,
     images : ndarray, shape (n_samples, nz, ny, nx)
         Periodic 0/1 images, void = 0.
     params : Mapping
-        The system's parameters (:func:`systems`).
+        The system's parameters (:func:`randmedia.config.debye3d_systems`).
     interface : Mapping
         The config section ``debye3d.interface`` (model, supersample, sigma_bracket,
         r_max_over_length, bin_width, bin_weighting, delta_bin, delta_max_over_length,
@@ -215,7 +174,7 @@ def level_set_datasets(images: np.ndarray, params: Mapping, interface: Mapping,
     from randmedia.describe.pore_size import pore_size_functions
     from randmedia.describe.surface import surface_functions, tune_sigma
 
-    length = system_length(params)
+    length = debye3d_system_length(params)
     s_exact = exact_specific_surface(params)
     sigma, s_tuned = tune_sigma(images, s_exact, supersample=interface["supersample"],
                                 model=interface["model"], bracket=tuple(interface["sigma_bracket"]),
@@ -253,7 +212,7 @@ def window_pores_dataset(images: np.ndarray, params: Mapping, interface: Mapping
     images : ndarray, shape (n_samples, nz, ny, nx)
         0/1 window images, void = 0.
     params : Mapping
-        The system's parameters (:func:`systems`).
+        The system's parameters (:func:`randmedia.config.debye3d_systems`).
     interface : Mapping
         The config section ``debye3d.interface`` (delta_bin, delta_max_over_length,
         k_candidates).
@@ -270,9 +229,9 @@ def window_pores_dataset(images: np.ndarray, params: Mapping, interface: Mapping
         With attributes ``kind``, ``phi2``, ``length_scale``, ``s_exact``, ``image_side``.
     """
     from randmedia.describe.window_pores import window_pore_size_functions
-    from randmedia.describe.window_surface import default_margin
+    from randmedia.numerics.gaussian import default_margin
 
-    length = system_length(params)
+    length = debye3d_system_length(params)
     sigma, supersample = float(level_set["sigma"]), int(level_set["supersample"])
     margin = int(level_set.get("margin", default_margin(sigma, supersample)))
     interior = min(images.shape[1:]) - 2 * margin / supersample
@@ -302,7 +261,7 @@ def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
     images : ndarray, shape (n_samples, nz, ny, nx)
         0/1 images, void = 0.
     params : Mapping
-        The system's parameters (:func:`systems`).
+        The system's parameters (:func:`randmedia.config.debye3d_systems`).
     chords : Mapping
         The config section ``debye3d.chords`` (z_max_over_length, sigma and the sampling
         keywords).
@@ -320,7 +279,7 @@ def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
     from randmedia.describe.window_chords import window_lineal_path_and_chords
 
     sampling = dict(chords)
-    length = system_length(params)
+    length = debye3d_system_length(params)
     z_max = sampling.pop("z_max_over_length") * length
     if sampling["sigma"] == "tuned":
         if level_set is None:
@@ -345,18 +304,6 @@ def chords_dataset(images: np.ndarray, params: Mapping, chords: Mapping,
     return out
 
 
-def window_margin(interface: Mapping) -> int:
-    """The interior margin (sub-voxels) of every window descriptor of a system: the rule of
-    :func:`randmedia.describe.window_surface.default_margin` at the upper end of the sigma
-    bracket, so that it holds for every sigma the tuner tries and the tuned s, the surface
-    functions, the chords and the pore sizes all use one interior (an earlier version tuned
-    on the bracket's interior and measured on the tuned sigma's: on 32^3 windows the two
-    differed by 14 voxels per side and s by 40 %)."""
-    from randmedia.describe.window_surface import default_margin
-
-    return default_margin(float(interface["sigma_bracket"][1]), int(interface["supersample"]))
-
-
 def window_surface_dataset(images: np.ndarray, params: Mapping, interface: Mapping,
                            log=None) -> xr.Dataset:
     """F_sv, F_ss and s of the void of one system's non-periodic 3D windows by minus-sampling
@@ -369,7 +316,7 @@ def window_surface_dataset(images: np.ndarray, params: Mapping, interface: Mappi
     images : ndarray, shape (n_samples, nz, ny, nx)
         0/1 window images, void = 0.
     params : Mapping
-        The system's parameters (:func:`systems`).
+        The system's parameters (:func:`randmedia.config.debye3d_systems`).
     interface : Mapping
         The config section ``debye3d.interface``.
     log : logging.Logger, optional
@@ -383,9 +330,9 @@ def window_surface_dataset(images: np.ndarray, params: Mapping, interface: Mappi
     """
     from randmedia.describe.window_surface import tune_sigma_window, window_surface_functions
 
-    length = system_length(params)
+    length = debye3d_system_length(params)
     s_exact = exact_specific_surface(params)
-    margin = window_margin(interface)
+    margin = debye3d_window_margin(interface)
     sigma, s_tuned = tune_sigma_window(images, s_exact, supersample=interface["supersample"], margin=margin,
                                        bracket=tuple(interface["sigma_bracket"]), log=log)
     surface = window_surface_functions(images, sigma=sigma, supersample=interface["supersample"],

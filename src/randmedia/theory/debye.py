@@ -2,12 +2,16 @@
 
 Eq. (21): chi_V(r) = phi1 phi2 exp(-r / a), so the two-point function of
 phase 2 is S2(r) = phi2^2 + phi1 phi2 exp(-r / a). With Eq. (7),
-S2'(0) = -s / pi in two dimensions, Eq. (22) gives s = pi phi1 phi2 / a.
+S2'(0) = -s / pi in two dimensions, Eq. (22) gives s = pi phi1 phi2 / a
+(:func:`randmedia.theory.debye_formulas.debye_specific_surface`, which the construction does
+not need).
 """
 
 from __future__ import annotations
 
 import numpy as np
+
+from randmedia.numerics.checks import check_fraction, check_positive
 
 
 def debye_s2(r, phi2: float, a: float) -> np.ndarray:
@@ -27,14 +31,7 @@ def debye_s2(r, phi2: float, a: float) -> np.ndarray:
     numpy.ndarray
         S2(r) of phase 2, same shape as ``r``.
     """
-    if not 0.0 < phi2 < 1.0:
-        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
-    if a <= 0:
-        raise ValueError(f"a must be > 0, got {a}")
+    check_fraction(phi2)
+    check_positive(a, "a")
     r = np.asarray(r, dtype=float)
     return phi2 * phi2 + phi2 * (1.0 - phi2) * np.exp(-r / a)
-
-
-def debye_specific_surface(phi2: float, a: float) -> float:
-    """Eq. (22) in 2D: s = pi phi1 phi2 / a (from Eq. 7, S2'(0) = -s/pi)."""
-    return np.pi * phi2 * (1.0 - phi2) / a

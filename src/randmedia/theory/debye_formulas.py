@@ -1,27 +1,19 @@
 """Semianalytic and empirical formulas of Debye random media (Ma & Torquato 2020, Sec. V).
 
-Eqs. (24)-(25): F_sv; Eq. (26): F_ss; the specific Euler characteristic that Eq. (24)
-implies through Eq. (13); Eq. (27): the pore-size density, its cumulative form and
-mean (Eq. 28) with the cubic p1(phi2) quoted after Eq. (27). The target two-point
-statistics (Eqs. 21-22) live in :mod:`randmedia.theory.debye`, which the construction
-depends on; these formulas are kept apart so that editing them does not invalidate
-constructed media. Also :func:`model_specific_surface`, the exact s of the paper's three
-models (Eqs. 22, 34, 40).
+The specific surface (Eq. 22 in 2D, 4 phi1 phi2 / a in 3D); Eqs. (24)-(25): F_sv;
+Eq. (26): F_ss; the specific Euler characteristic that Eq. (24) implies through Eq. (13);
+Eq. (27): the pore-size density, its cumulative form and mean (Eq. 28) with the cubic
+p1(phi2) quoted after Eq. (27). The target two-point function (Eq. 21) lives in
+:mod:`randmedia.theory.debye`, which the construction depends on; these formulas are kept
+apart so that editing them does not invalidate constructed media. Also
+:func:`model_specific_surface`, the exact s of the paper's three models (Eqs. 22, 34, 40).
 """
 
 from __future__ import annotations
 
 import numpy as np
 
-from randmedia.theory.debye import debye_specific_surface
-
-
-def _check(phi2: float, a: float) -> None:
-    if not 0.0 < phi2 < 1.0:
-        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
-    if a <= 0:
-        raise ValueError(f"a must be > 0, got {a}")
-
+from randmedia.numerics.checks import check_dim, check_fraction, check_positive
 
 #: s = c_d phi1 phi2 / a from Eq. (7) (S2'(0) = -s/pi in 2D, -s/4 in 3D) and Eq. (21)
 SURFACE_COEFFICIENT = {2: np.pi, 3: 4.0}
@@ -30,21 +22,17 @@ SURFACE_COEFFICIENT = {2: np.pi, 3: 4.0}
 PAIR_COEFFICIENT = {2: 1.0, 3: 2.0}
 
 
-def _check_dim(dim: int) -> None:
-    if dim not in SURFACE_COEFFICIENT:
-        raise ValueError(f"dim must be 2 or 3, got {dim}")
-
-
-def debye_surface_specific(phi2: float, a: float, dim: int = 2) -> float:
-    """Specific surface of Debye random media: Eq. (22) in 2D, pi phi1 phi2 / a; in 3D
-    4 phi1 phi2 / a (Eq. 7 with S2'(0) = -s/4; Sec. VII).
+def debye_specific_surface(a: float, phi2: float, dim: int = 2) -> float:
+    """Specific surface of Debye random media: Eq. (22) in 2D, s = pi phi1 phi2 / a (from
+    Eq. 7, S2'(0) = -s/pi, with Eq. 21); in 3D 4 phi1 phi2 / a (Eq. 7 with S2'(0) = -s/4;
+    Sec. VII).
 
     Parameters
     ----------
-    phi2 : float
-        Volume fraction of phase 2, in (0, 1).
     a : float
         Correlation length of Eq. (21), > 0.
+    phi2 : float
+        Volume fraction of phase 2, in (0, 1).
     dim : int, optional
         Dimension, 2 or 3.
 
@@ -53,10 +41,9 @@ def debye_surface_specific(phi2: float, a: float, dim: int = 2) -> float:
     float
         s (1/length).
     """
-    _check(phi2, a)
-    _check_dim(dim)
-    if dim == 2:
-        return debye_specific_surface(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
+    check_dim(dim)
     return SURFACE_COEFFICIENT[dim] * phi2 * (1.0 - phi2) / a
 
 
@@ -81,9 +68,10 @@ def debye_surface_void(r, phi2: float, a: float, dim: int = 2) -> np.ndarray:
     numpy.ndarray
         F_sv(r) (units 1/length), same shape as ``r``.
     """
-    _check(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
     decay = np.exp(-np.asarray(r, dtype=float) / a)
-    return debye_surface_specific(phi2, a, dim) * (1.0 - phi2 + phi2 * decay) / (1.0 + decay)
+    return debye_specific_surface(a, phi2, dim) * (1.0 - phi2 + phi2 * decay) / (1.0 + decay)
 
 
 def debye_surface_surface(r, phi2: float, a: float, dim: int = 2) -> np.ndarray:
@@ -108,8 +96,9 @@ def debye_surface_surface(r, phi2: float, a: float, dim: int = 2) -> np.ndarray:
     numpy.ndarray
         F_ss(r) (units 1/length^2), same shape as ``r``.
     """
-    _check(phi2, a)
-    _check_dim(dim)
+    check_fraction(phi2)
+    check_positive(a, "a")
+    check_dim(dim)
     r = np.asarray(r, dtype=float)
     q = phi2 * (1.0 - phi2)
     decay = np.exp(-r / a)
@@ -122,7 +111,8 @@ def debye_surface_surface(r, phi2: float, a: float, dim: int = 2) -> np.ndarray:
 def debye_euler_characteristic(phi2: float, a: float) -> float:
     """Specific Euler characteristic from Eq. (24) and Eq. (13): dF_sv/dr at r = 0,
     pi (phi1 - phi2) phi1 phi2 / (4 a^2) (Sec. V A)."""
-    _check(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
     phi1 = 1.0 - phi2
     return np.pi * (phi1 - phi2) * phi1 * phi2 / (4.0 * a * a)
 
@@ -227,7 +217,8 @@ def debye_mean_pore_size(phi2: float, a: float, coefficients=P1_COEFFICIENTS) ->
     float
         Mean pore size <delta>, in the length unit of ``a``.
     """
-    _check(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
     return mean_pore_size(float(pore_p1(phi2, a, coefficients)), np.pi * phi2 / a)
 
 
@@ -252,7 +243,7 @@ def model_specific_surface(model: str, *, phi2: float, a: float | None = None,
     float
         Specific surface s (interface length per unit area in 2D).
     """
-    from randmedia.theory import hard_disks, overlapping
+    from randmedia.theory import hard_spheres, overlapping
 
     if model not in ("debye", "overlapping_disks", "hard_disks"):
         raise ValueError(f"unknown model {model!r}; expected debye, overlapping_disks or hard_disks")
@@ -260,9 +251,9 @@ def model_specific_surface(model: str, *, phi2: float, a: float | None = None,
     if length is None:
         raise ValueError(f"model {model!r} needs {'a' if model == 'debye' else 'radius'}")
     if model == "debye":
-        return debye_specific_surface(phi2, a)
+        return debye_specific_surface(a, phi2)
     if model == "overlapping_disks":
         return overlapping.specific_surface(radius, phi2, dim=2)
     if model == "hard_disks":
-        return hard_disks.specific_surface(radius, phi2)
+        return hard_spheres.specific_surface(radius, phi2, 2)
     raise ValueError(f"unknown model {model!r}; expected debye, overlapping_disks or hard_disks")

@@ -4,7 +4,8 @@ Identical disks of radius R (phase 2, volume fraction phi2) in equilibrium
 along the fluid branch; phase 1 is the matrix (void).
 
 * s = 2 phi2 / R                                                    Eq. (40)
-  (exact for non-overlapping disks: perimeter 2 pi R per disk, rho = phi2/(pi R^2))
+  (exact for non-overlapping disks: perimeter 2 pi R per disk, rho = phi2/(pi R^2));
+  :func:`randmedia.theory.hard_spheres.specific_surface` with ``dim=2``
 * L(z) = phi1 exp(-(2 phi2 / (pi phi1)) z / R)                      Eq. (42)
   (Lu & Torquato, PRE A 45, 922 (1992): the matrix lineal-path function of
   equilibrium hard disks in the approximation the paper uses)
@@ -20,23 +21,13 @@ from __future__ import annotations
 
 import numpy as np
 
-
-def _check(radius: float, phi2: float) -> None:
-    if radius <= 0:
-        raise ValueError(f"radius must be > 0, got {radius}")
-    if not 0.0 < phi2 < 1.0:
-        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
-
-
-def specific_surface(radius: float, phi2: float) -> float:
-    """Eq. (40): s = 2 phi2 / R."""
-    _check(radius, phi2)
-    return 2.0 * phi2 / radius
+from randmedia.numerics.checks import check_fraction, check_positive
 
 
 def chord_rate(radius: float, phi2: float) -> float:
     """lambda = 2 phi2 / (pi phi1 R): the decay rate of Eqs. (42)-(43), 1 / mean chord."""
-    _check(radius, phi2)
+    check_positive(radius, "radius")
+    check_fraction(phi2)
     return 2.0 * phi2 / (np.pi * (1.0 - phi2) * radius)
 
 

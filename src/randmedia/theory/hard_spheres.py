@@ -1,7 +1,9 @@
 """Equations of state of equilibrium hard disks (d = 2) and hard spheres (d = 3).
 
 Notation: diameter D, number density rho, packing fraction phi = rho v1(D/2) with
-v1(r) the volume of a d-ball of radius r; compressibility factor Z = beta p / rho.
+v1(r) the volume of a d-ball of radius r (:func:`randmedia.theory.balls.ball_volume`);
+compressibility factor Z = beta p / rho. Exact for any non-overlapping balls: the specific
+surface s = d phi / R (:func:`specific_surface`; Ma & Torquato 2020, Eq. 40 in 2D).
 
 Compressibility factors (``eos=`` names):
 
@@ -56,6 +58,9 @@ import math
 
 import numpy as np
 
+from randmedia.numerics.checks import check_dim, check_fraction, check_positive
+from randmedia.theory.balls import ball_volume
+
 #: packing fraction at which the stable fluid branch ends (freezing / liquid-hexatic)
 FLUID_LIMIT = {2: 0.700, 3: 0.492}
 #: densest packing (triangular lattice, fcc)
@@ -78,11 +83,6 @@ VIRIAL_RANGE = {2: 0.35, 3: 0.30}
 _EOS_BY_DIM = {2: ("henderson", "santos", "virial"), 3: ("carnahan_starling", "kolafa", "virial")}
 
 
-def ball_volume(radius, dim: int):
-    """Volume of a d-ball, v1(r) = pi^(d/2) r^d / Gamma(1 + d/2)."""
-    return math.pi ** (dim / 2.0) / math.gamma(1.0 + dim / 2.0) * np.asarray(radius, float) ** dim
-
-
 def number_density(phi: float, diameter: float, dim: int) -> float:
     """rho = phi / v1(D/2).
 
@@ -100,9 +100,8 @@ def number_density(phi: float, diameter: float, dim: int) -> float:
     float
         rho, in units of 1/length^d (length of ``diameter``).
     """
-    _check_dim(dim)
-    if not diameter > 0:
-        raise ValueError(f"diameter must be > 0, got {diameter}")
+    check_dim(dim)
+    check_positive(diameter, "diameter")
     return float(phi / ball_volume(diameter / 2.0, dim))
 
 
@@ -123,17 +122,37 @@ def packing_fraction(rho: float, diameter: float, dim: int) -> float:
     float
         Packing fraction phi.
     """
-    _check_dim(dim)
+    check_dim(dim)
     return float(rho * ball_volume(diameter / 2.0, dim))
 
 
-def _check_dim(dim: int) -> None:
-    if dim not in (2, 3):
-        raise ValueError(f"dimension must be 2 or 3, got {dim}")
+def specific_surface(radius: float, phi: float, dim: int) -> float:
+    """s = d phi / R of non-overlapping d-balls (exact: surface d v1(R) / R per ball), Eq. (40)
+    of Ma & Torquato 2020 in 2D (s = 2 phi2 / R).
+
+    Parameters
+    ----------
+    radius : float
+        Particle radius R, > 0.
+    phi : float
+        Packing fraction, in (0, 1).
+    dim : int
+        Dimension d, 2 or 3.
+
+    Returns
+    -------
+    float
+        s (1/length of ``radius``).
+    """
+    check_dim(dim)
+    check_fraction(phi, "packing fraction")
+    check_positive(radius, "radius")
+    return dim * phi / radius
 
 
-def _check(phi, dim: int, eos: str) -> np.ndarray:
-    _check_dim(dim)
+def _check_eos(phi, dim: int, eos: str) -> np.ndarray:
+    """phi as an array, checked against the fluid range of the equation of state ``eos``."""
+    check_dim(dim)
     if eos not in _EOS_BY_DIM[dim]:
         raise ValueError(f"unknown equation of state {eos!r} for d = {dim}; "
                          f"choose one of {_EOS_BY_DIM[dim]}")
@@ -165,7 +184,7 @@ def compressibility_factor(phi, dim: int, eos: str | None = None):
         Z, a float for scalar ``phi``, else an array of the shape of ``phi``.
     """
     eos = eos or DEFAULT_EOS.get(dim, "")
-    phi = _check(phi, dim, eos)
+    phi = _check_eos(phi, dim, eos)
     if eos == "carnahan_starling":
         z = (1 + phi + phi**2 - phi**3) / (1 - phi) ** 3
     elif eos == "kolafa":
@@ -200,7 +219,7 @@ def contact_value(phi, dim: int, eos: str | None = None):
         g(D+), a float for scalar ``phi``, else an array of the shape of ``phi``.
     """
     eos = eos or DEFAULT_EOS.get(dim, "")
-    phi = _check(phi, dim, eos)
+    phi = _check_eos(phi, dim, eos)
     z = np.asarray(compressibility_factor(phi, dim, eos))
     with np.errstate(invalid="ignore", divide="ignore"):
         g = np.where(phi > 0, (z - 1.0) / (2.0 ** (dim - 1) * np.where(phi > 0, phi, 1.0)), 1.0)
@@ -224,7 +243,7 @@ def reduced_pressure_from_contact(phi, contact, dim: int):
     numpy.ndarray
         beta p / rho (a 0-d array for scalar input).
     """
-    _check_dim(dim)
+    check_dim(dim)
     return 1.0 + 2.0 ** (dim - 1) * np.asarray(phi, float) * np.asarray(contact, float)
 
 
@@ -248,7 +267,7 @@ def structure_factor_zero(phi, dim: int, eos: str | None = None):
         S(0), a float for scalar ``phi``, else an array of the shape of ``phi``.
     """
     eos = eos or DEFAULT_EOS.get(dim, "")
-    phi = _check(phi, dim, eos)
+    phi = _check_eos(phi, dim, eos)
     h = 1e-5
 
     def f(x):

@@ -3,7 +3,8 @@
 Centres form a Poisson point process of intensity rho; the d-balls of radius R
 are phase 2, their complement is the void (matrix) phase 1. With the reduced
 density eta = rho v1(R), v1 = omega_d R^d (omega_d: volume of the unit d-ball,
-Ma & Torquato 2020, Eq. 8):
+Ma & Torquato 2020, Eq. 8; omega_d, v1 and rho = eta / v1 are those of
+:mod:`randmedia.theory.balls`):
 
 * phi1 = exp(-eta)                                  (Ma & Torquato 2020, Sec. VI A)
 * S2^(1)(r) = exp(-rho v2(r; R))                    Eq. (32); v2 = union volume,
@@ -42,52 +43,15 @@ import math
 
 import numpy as np
 from scipy.integrate import quad
-from scipy.special import gamma
 
-
-def _check_dim(dim: int) -> None:
-    if dim not in (2, 3):
-        raise ValueError(f"dim must be 2 or 3, got {dim}")
-
-
-def _check(radius: float, phi2: float | None = None) -> None:
-    if radius <= 0:
-        raise ValueError(f"radius must be > 0, got {radius}")
-    if phi2 is not None and not 0.0 < phi2 < 1.0:
-        raise ValueError(f"phi2 must lie in (0, 1), got {phi2}")
-
-
-def unit_ball_volume(dim: int) -> float:
-    """omega_d = pi^(d/2) / Gamma(1 + d/2) (Ma & Torquato 2020, Eq. 8); omega_1 = 2."""
-    return math.pi ** (dim / 2) / gamma(1 + dim / 2)
+from randmedia.numerics.checks import check_dim, check_fraction, check_positive
+from randmedia.theory.balls import poisson_intensity, unit_ball_volume
 
 
 def reduced_density(phi2: float) -> float:
     """eta = rho v1 = -ln(phi1), from the volume fraction phi2 of the balls."""
-    _check(1.0, phi2)
+    check_fraction(phi2)
     return -math.log1p(-phi2)
-
-
-def number_density(phi2: float, radius: float, dim: int) -> float:
-    """rho = eta / (omega_d R^d).
-
-    Parameters
-    ----------
-    phi2 : float
-        Volume fraction of the balls (phase 2), in (0, 1).
-    radius : float
-        Radius R of the balls, > 0.
-    dim : int
-        Dimension d, 2 or 3.
-
-    Returns
-    -------
-    float
-        rho, in units of 1/length^d.
-    """
-    _check_dim(dim)
-    _check(radius, phi2)
-    return reduced_density(phi2) / (unit_ball_volume(dim) * radius**dim)
 
 
 def union_volume_ratio(r, radius: float, dim: int = 2) -> np.ndarray:
@@ -108,8 +72,8 @@ def union_volume_ratio(r, radius: float, dim: int = 2) -> np.ndarray:
         v2/v1, in [1, 2], same shape as ``r``.
     """
     r = np.asarray(r, dtype=float)
-    _check_dim(dim)
-    _check(radius)
+    check_dim(dim)
+    check_positive(radius, "radius")
     if np.any(r < 0):
         raise ValueError("distances must be >= 0")
     overlapping = r < 2.0 * radius
@@ -141,7 +105,8 @@ def s2_void(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
     numpy.ndarray
         S2 of the void phase 1, same shape as ``r``.
     """
-    _check(radius, phi2)
+    check_positive(radius, "radius")
+    check_fraction(phi2)
     return np.exp(-reduced_density(phi2) * union_volume_ratio(r, radius, dim))
 
 
@@ -162,8 +127,9 @@ def specific_surface(radius: float, phi2: float, dim: int) -> float:
     float
         s, interface measure per unit volume (1/length).
     """
-    _check_dim(dim)
-    _check(radius, phi2)
+    check_dim(dim)
+    check_positive(radius, "radius")
+    check_fraction(phi2)
     return dim * reduced_density(phi2) * (1.0 - phi2) / radius
 
 
@@ -207,7 +173,7 @@ def surface_void(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
     numpy.ndarray
         F_sv(r) (1/length), same shape as ``r``.
     """
-    _check_dim(dim)
+    check_dim(dim)
     s_over_phi1 = specific_surface(radius, phi2, dim) / (1.0 - phi2)
     return s_over_phi1 * _fraction_outside(r, radius, dim) * s2_void(r, radius, phi2, dim)
 
@@ -231,9 +197,9 @@ def surface_surface(r, radius: float, phi2: float, dim: int = 2) -> np.ndarray:
     numpy.ndarray
         F_ss(r) (1/length^2), same shape as ``r``; inf at r = 0.
     """
-    _check_dim(dim)
+    check_dim(dim)
     s_over_phi1 = specific_surface(radius, phi2, dim) / (1.0 - phi2)
-    rho = number_density(phi2, radius, dim)
+    rho = poisson_intensity(phi2, radius, dim)
     pair = (s_over_phi1 * _fraction_outside(r, radius, dim)) ** 2
     return s2_void(r, radius, phi2, dim) * (pair + rho * _two_sphere_density(r, radius, dim))
 
@@ -257,8 +223,9 @@ def pore_size_complementary_cdf(delta, radius: float, phi2: float, dim: int = 2)
     numpy.ndarray
         F(delta), same shape as ``delta``.
     """
-    _check_dim(dim)
-    _check(radius, phi2)
+    check_dim(dim)
+    check_positive(radius, "radius")
+    check_fraction(phi2)
     delta = np.asarray(delta, dtype=float)
     if np.any(delta < 0):
         raise ValueError("pore sizes must be >= 0")
@@ -332,7 +299,7 @@ def exclusion_probability(r, rho: float, dim: int = 3) -> np.ndarray:
     numpy.ndarray
         E_V(r), same shape as ``r``.
     """
-    _check_dim(dim)
+    check_dim(dim)
     if rho <= 0:
         raise ValueError(f"rho must be > 0, got {rho}")
     return np.exp(-rho * unit_ball_volume(dim) * np.asarray(r, dtype=float) ** dim)
@@ -355,8 +322,9 @@ def chord_rate(radius: float, phi2: float, dim: int = 2) -> float:
     float
         lambda (1/length).
     """
-    _check_dim(dim)
-    _check(radius, phi2)
+    check_dim(dim)
+    check_positive(radius, "radius")
+    check_fraction(phi2)
     return reduced_density(phi2) * unit_ball_volume(dim - 1) / (unit_ball_volume(dim) * radius)
 
 

@@ -8,8 +8,9 @@ process of rate 1/a; cells are convex, so two points lie in the same cell iff no
 crosses the segment between them, probability e = e^(-r/a); distinct cells have independent
 colours; the plane area per volume is S_V = 1 / (a kappa_d) (kappa_3 = 1/2, kappa_2 = 2/pi);
 a plane piece is interface iff the two cells it separates differ (probability 2 phi1 phi2),
-so s = 2 phi1 phi2 S_V (4 phi1 phi2 / a in 3D). By Slivnyak's theorem the planes other than
-the one through a typical interface point are again the Poisson process.
+so s = 2 phi1 phi2 S_V (4 phi1 phi2 / a in 3D) -- these exact plane formulas are in
+:mod:`randmedia.theory.plane_process`. By Slivnyak's theorem the planes other than the one
+through a typical interface point are again the Poisson process.
 
 * **F_sv** (Eq. 11). Take x on the interface, on plane P0 between a void cell A and a solid
   cell B. For an isotropic displacement r, x + r lies on A's side of P0 with probability 1/2;
@@ -53,7 +54,8 @@ import math
 
 import numpy as np
 
-from randmedia.generate.poisson_planes import _check, plane_area_density, specific_surface
+from randmedia.numerics.checks import check_fraction, check_positive
+from randmedia.theory.plane_process import plane_area_density, specific_surface
 
 
 def same_plane_density(r, dim: int) -> np.ndarray:
@@ -86,10 +88,11 @@ def surface_void(r, phi2: float, a: float, dim: int = 3) -> np.ndarray:
     -------
     numpy.ndarray
     """
-    _check(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
     decay = np.exp(-np.asarray(r, dtype=float) / a)
     phi1 = 1.0 - phi2
-    return specific_surface(phi2, a, dim) * (phi1 + (0.5 - phi1) * decay)
+    return specific_surface(a, phi2, dim) * (phi1 + (0.5 - phi1) * decay)
 
 
 def surface_surface(r, phi2: float, a: float, dim: int = 3) -> np.ndarray:
@@ -111,30 +114,34 @@ def surface_surface(r, phi2: float, a: float, dim: int = 3) -> np.ndarray:
     -------
     numpy.ndarray
     """
-    _check(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
     r = np.asarray(r, dtype=float)
     decay = np.exp(-r / a)
     mixed = 2.0 * phi2 * (1.0 - phi2)
     with np.errstate(divide="ignore"):
         same = same_plane_density(r, dim) * (decay + mixed * (1.0 - decay))
     other = plane_area_density(a, dim) * (0.5 * decay + mixed * (1.0 - decay))
-    return specific_surface(phi2, a, dim) * (same + other)
+    return specific_surface(a, phi2, dim) * (same + other)
 
 
 def lineal_path_void(z, phi2: float, a: float) -> np.ndarray:
     """L(z) of the void: phi1 e^(-phi2 z / a) (any d)."""
-    _check(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
     return (1.0 - phi2) * np.exp(-phi2 * np.asarray(z, dtype=float) / a)
 
 
 def chord_density_void(z, phi2: float, a: float) -> np.ndarray:
     """p(z) of the void chords: (phi2 / a) e^(-phi2 z / a) (any d), 1/length."""
-    _check(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
     return phi2 / a * np.exp(-phi2 * np.asarray(z, dtype=float) / a)
 
 
 def chord_bin_average(low, high, phi2: float, a: float) -> np.ndarray:
     """p(z) averaged over the chord-length bin [low, high]: the exact value of a histogram bin."""
-    _check(phi2, a)
+    check_fraction(phi2)
+    check_positive(a, "a")
     low, high = np.asarray(low, dtype=float), np.asarray(high, dtype=float)
     return (np.exp(-phi2 * low / a) - np.exp(-phi2 * high / a)) / (high - low)

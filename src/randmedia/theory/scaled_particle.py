@@ -47,7 +47,8 @@ For d = 2 this is Ma & Torquato's Eq. (41),
     P(delta) = (4 phi2 / R) (a_0 x + a_1) exp[-phi2 (4 a_0 x^2 + 8 a_1 x + a_2)],
     x = delta / (2R) + 1/2,  a_2 = -(a_0 + 4 a_1),
 where a_2 is fixed by F(0) = 1; then P(0) = 2 phi2 / (R (1 - phi2)) = s / phi1 with the
-specific surface s = 2 phi2 / R (Eq. 40) -- both tested. In d dimensions s = d phi / R.
+specific surface s = 2 phi2 / R (Eq. 40) -- both tested. In d dimensions s = d phi / R
+(:func:`randmedia.theory.hard_spheres.specific_surface`).
 """
 
 from __future__ import annotations
@@ -55,14 +56,8 @@ from __future__ import annotations
 import numpy as np
 from scipy.integrate import quad
 
+from randmedia.numerics.checks import check_dim, check_fraction, check_positive
 from randmedia.theory.hard_spheres import DEFAULT_EOS, compressibility_factor, contact_value
-
-
-def _check(phi: float, dim: int) -> None:
-    if dim not in (2, 3):
-        raise ValueError(f"dimension must be 2 or 3, got {dim}")
-    if not 0.0 < phi < 1.0:
-        raise ValueError(f"packing fraction must lie in (0, 1), got {phi}")
 
 
 def gv_coefficients(phi: float, dim: int, eos: str | None = None, *, contact: float | None = None,
@@ -90,7 +85,8 @@ def gv_coefficients(phi: float, dim: int, eos: str | None = None, *, contact: fl
     numpy.ndarray
         Shape (dim,): a_0, ..., a_{d-1}.
     """
-    _check(phi, dim)
+    check_dim(dim)
+    check_fraction(phi, "packing fraction")
     eos = eos or DEFAULT_EOS[dim]
     g = contact_value(phi, dim, eos) if contact is None else float(contact)
     rows = [[2.0**k for k in range(dim)], [1.0] * dim]  # G_V(1/2), G_V(1)
@@ -136,8 +132,7 @@ def exclusion_probability(r, phi: float, dim: int, diameter: float = 1.0, eos: s
     numpy.ndarray
         E_V(r), same shape as ``r``.
     """
-    if not diameter > 0:
-        raise ValueError(f"diameter must be > 0, got {diameter}")
+    check_positive(diameter, "diameter")
     a = gv_coefficients(phi, dim, eos, **overrides)
     x = np.asarray(r, dtype=float) / diameter
     if np.any(x < 0):
@@ -268,29 +263,6 @@ def pore_size_moments(phi: float, dim: int, diameter: float = 1.0, eos: str | No
     first = quad(ccdf, 0.0, np.inf, epsabs=1e-12, epsrel=1e-10)[0]
     second = 2.0 * quad(lambda d: d * ccdf(d), 0.0, np.inf, epsabs=1e-12, epsrel=1e-10)[0]
     return first, second
-
-
-def specific_surface(phi: float, radius: float, dim: int) -> float:
-    """s = d phi / R of non-overlapping d-balls (Eq. 40 in 2D: 2 phi2 / R).
-
-    Parameters
-    ----------
-    phi : float
-        Packing fraction, in (0, 1).
-    radius : float
-        Particle radius R, > 0.
-    dim : int
-        Dimension d, 2 or 3.
-
-    Returns
-    -------
-    float
-        s (1/length of ``radius``).
-    """
-    _check(phi, dim)
-    if not radius > 0:
-        raise ValueError(f"radius must be > 0, got {radius}")
-    return dim * phi / radius
 
 
 # --------------------------------------------------------------------------- Ma & Torquato Eq. 41

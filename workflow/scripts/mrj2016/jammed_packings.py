@@ -26,7 +26,10 @@ for path in snakemake.input.samples:
              contacts["gap_tolerance"], dataset.attrs["jammed"], certified)
     # attempt: which seed made it (0 = the sample's own; packings made before redraws existed lack it)
     records.append({"file": str(path), **{key: dataset.attrs[key] for key in PACKING_ATTRS},
-                    "attempt": int(dataset.attrs.get("attempt", 0)), "certified_gap_tolerance": certified})
+                    "attempt": int(dataset.attrs.get("attempt", 0)), "certified_gap_tolerance": certified,
+                    # the route that made it (randmedia.generate.mrj.ROUTES) and its polish LPs
+                    "route": dataset.attrs.get("route_name", "compression"),
+                    "n_polish_lp": int(dataset.attrs.get("n_polish_lp", -1))})
 table = summary_table(records)
 for _, row in table[table["sample"].isin(["mean", "sem"])].iterrows():
     log.info("%s %s: phi %.5f, z %.4f, rattlers %.4f, Q6 %.4f", row["system"], row["sample"],

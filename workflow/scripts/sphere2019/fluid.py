@@ -15,8 +15,9 @@ params = dict(snakemake.params.items())
 system = snakemake.wildcards.system
 fluid, run = params["fluid"], params["run"]
 radius = float(fluid["R"])
-potential = Potential(fluid["potential"], float(fluid.get("coupling", 1.0)))
+potential = Potential(fluid["potential"], float(fluid["coupling"]))
 schedule = MCSchedule(target_acceptance=params["target_acceptance"],
+                      tune_fraction=params["tune_fraction"],
                       initial_step=params["initial_step"], **run)
 a = cap_grid(radius, params["n_a"])
 seed = sample_seed(params["seed"], "sphere2019", system, 0)

@@ -21,7 +21,7 @@ import math
 import numpy as np
 
 from randmedia.generate.hard_particles.geometry import packing_fraction_of
-from randmedia.theory.hard_spheres import ball_volume
+from randmedia.theory.balls import ball_volume
 
 
 def contact_fit(hist, n_measurements, n_particles, box_lengths, diameter, settings) -> dict:

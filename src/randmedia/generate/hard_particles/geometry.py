@@ -8,7 +8,8 @@ import math
 
 import numpy as np
 
-from randmedia.theory.hard_spheres import FLUID_LIMIT, ball_volume
+from randmedia.theory.balls import ball_volume
+from randmedia.theory.hard_spheres import FLUID_LIMIT
 
 
 def cubic_box(n_particles: int, phi: float, dim: int, diameter: float = 1.0) -> np.ndarray:

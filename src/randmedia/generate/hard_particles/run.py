@@ -32,7 +32,7 @@ def _checkpoint_key(n, box_lengths, diameter, n_samples, settings, rng, start) -
 
 
 def run_chain(n_particles: int, box_lengths, diameter: float, n_samples: int,
-              rng: np.random.Generator, settings: MCSettings = MCSettings(), *,
+              rng: np.random.Generator, settings: MCSettings, *,
               checkpoint: str | os.PathLike | None = None, checkpoint_seconds: float = 60.0,
               log: logging.Logger | None = None, log_seconds: float = 10.0,
               start: str = "auto", keep_checkpoint: bool = False) -> ChainResult:

@@ -11,21 +11,26 @@ class ChainError(RuntimeError):
     """The chain could not be started or did not behave (overlap, stalled compression)."""
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class MCSettings:
     """Constants of a chain (:mod:`~randmedia.generate.hard_particles.chain`, contact fit:
-    :mod:`~randmedia.generate.hard_particles.contact`); MSDs in units of D^2."""
+    :mod:`~randmedia.generate.hard_particles.contact`); MSDs in units of D^2.
+
+    The defaults are those of the config sections ``debye2020.hard_disks.mc`` and
+    ``mrj2016.equilibrium.mc`` (schema ``workflow/schemas/hard_particles.mc.schema.yaml``);
+    ``sample_msd``, ``measure_every``, ``contact_range`` and ``contact_order``, which the two
+    set differently, have none (tests/test_defaults.py)."""
 
     target_acceptance: float = 0.25
     equilibration_msd: float = 4.0
     min_equilibration_sweeps: int = 200
-    sample_msd: float = 1.0
+    sample_msd: float
     interval_safety: float = 1.25
     block_sweeps: int = 10
-    measure_every: int = 5
-    contact_range: float = 0.1
+    measure_every: int
+    contact_range: float
     contact_bins: int = 20
-    contact_order: int = 3
+    contact_order: int
 
     def __post_init__(self):
         checks = {
