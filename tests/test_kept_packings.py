@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 import yaml
 
-from randmedia.generate import PARTICLE_CONFIG
+from randmedia.generate import PARTICLE_CONFIG, particle_config_dataset
 from randmedia.generate.jammed import packing_fraction
 from randmedia.io import read_dataset
 from randmedia.periodic import Cell, min_pair_distance
@@ -42,3 +42,35 @@ def test_a_kept_packing_is_certified_and_made_with_the_paper_config(path):
     for stage in ("polish", "contacts", "dilute" if route == "dilute" else "compression"):
         assert made_with[stage] == SECTION[stage], f"{path}: {stage} differs from config/config.yaml"
     assert np.isfinite(positions).all()
+
+
+QUICK_PACKING = REPO / "tests" / "data" / "mrj2016_quick_mrj_sample0.nc"
+
+
+def _cpu_model() -> str | None:
+    try:
+        for line in Path("/proc/cpuinfo").read_text().splitlines():
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    except OSError:
+        return None
+    return None
+
+
+def test_a_kept_quick_packing_is_regenerated_bit_for_bit_from_its_seed():
+    """The quick config's sample 0 (tests/data, made by the packing rule with the route then
+    configured) is made again from the seed and configuration it records: the same positions
+    and cell to the last bit. The LP solver's BLAS and numba's compiled kernels pick code paths
+    by CPU, so bit-identity is claimed on the CPU model that made the file."""
+    from randmedia.generate.mrj import MRJProtocol, make_packing
+
+    made_on = json.loads(QUICK_PACKING.with_suffix(".json").read_text())["cpu_model"]
+    if made_on != _cpu_model():
+        pytest.skip(f"made on {made_on!r}, this CPU is {_cpu_model()!r}")
+    ds = read_dataset(QUICK_PACKING, PARTICLE_CONFIG)
+    config = json.loads(ds.attrs["config_json"])
+    packing = make_packing(int(ds.attrs["seed"]), config["n_particles"], MRJProtocol.from_config(config))
+    # as the packing rule writes it (positions wrapped into the cell by the file contract)
+    again = particle_config_dataset(packing.positions, packing.box, packing.diameter, {})
+    assert np.array_equal(again["position"].values, ds["position"].values)
+    assert np.array_equal(again["box"].values, ds["box"].values)
