@@ -17,7 +17,7 @@ def _write(path, seed, config):
 
 def test_a_kept_file_matches_only_its_own_seed_and_configuration(tmp_path):
     config = {"n_particles": 100, "polish": {"tolerance": 1e-10}, "checkpoint_seconds": 120,
-              "keep_dir": "record/mrj2016/packings"}
+              "keep_dir": "record/packings/mrj2016"}
     path = kept_path(tmp_path, "mrj", 3)
     assert path == tmp_path / "mrj" / "sample3.nc"
     assert not matching_kept(path, 7, config)  # nothing kept yet

@@ -1,4 +1,4 @@
-"""The MRJ packings kept beside the record (record/mrj2016/packings/): each is overlap-free,
+"""The MRJ packings kept beside the record (record/packings/mrj2016/): each is overlap-free,
 has the packing fraction it claims, was certified strictly jammed at the configured contact
 gap, carries its provenance, and was made with the paper config's current packing parameters
 (so a paper-config run takes it back instead of regenerating it)."""
@@ -18,11 +18,11 @@ from randmedia.io import read_dataset
 from randmedia.periodic import Cell, min_pair_distance
 
 REPO = Path(__file__).resolve().parents[1]
-KEPT = sorted((REPO / "record" / "mrj2016" / "packings").glob("*/sample*.nc"))
+KEPT = sorted((REPO / "record" / "packings" / "mrj2016").glob("*/sample*.nc"))
 SECTION = yaml.safe_load((REPO / "config" / "config.yaml").read_text())["mrj2016"]["mrj"]
 
 
-@pytest.mark.skipif(not KEPT, reason="no packings kept in record/mrj2016/packings yet")
+@pytest.mark.skipif(not KEPT, reason="no packings kept in record/packings/mrj2016 yet")
 @pytest.mark.parametrize("path", KEPT, ids=[f"{p.parent.name}/{p.stem}" for p in KEPT])
 def test_a_kept_packing_is_certified_and_made_with_the_paper_config(path):
     ds = read_dataset(path, PARTICLE_CONFIG, attrs=("phi", "jammed", "gap_tolerance", "n_particles",

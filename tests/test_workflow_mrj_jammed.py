@@ -53,12 +53,14 @@ def test_packings_follow_the_contract_and_are_jammed(jammed_run, section):
         # the stored contact list is the gap-test network of the stored packing
         network = jamming.contact_network(positions, box, gap_tolerance=ds.attrs["gap_tolerance"])
         np.testing.assert_array_equal(ds["contact"].values, network.pairs)
-        # the tolerance lies in an empty range of gaps at least 3 decades wide: contacts are
-        # closed to LP round-off, far below it; non-contacts lie above it. (Jammed packings
-        # have a power-law excess of near contacts, g(h) ~ h^-0.4, so the nearest non-contact
-        # can come within a decade of the tolerance: 8e-9 D in one quick packing.)
+        # the tolerance lies in an empty range of gaps: contacts are closed to the LP's
+        # round-off, set by HiPO's feasibility tolerance 1e-10 (packing_lp.HIPO_OPTIONS; 1.03e-11 D
+        # in a quick packing of the dilute route, ~1e-12 with IPX + crossover), far below it;
+        # non-contacts lie above it. (Jammed packings have a power-law excess of near contacts,
+        # g(h) ~ h^-0.4, so the nearest non-contact can come within a decade of the tolerance:
+        # 8e-9 D in one quick packing.)
         max_contact_gap = ds["contact_gap"].values.max()
-        assert max_contact_gap < ds.attrs["gap_tolerance"] / 100
+        assert max_contact_gap < ds.attrs["gap_tolerance"] / 10
         assert ds.attrs["min_noncontact_gap"] > ds.attrs["gap_tolerance"]
         assert ds.attrs["min_noncontact_gap"] > 1e3 * max(max_contact_gap, 1e-16)
         assert 0 <= ds.attrs["Q6"] < 0.2 and ds.attrs["crystal_fraction"] < 0.05
@@ -82,12 +84,12 @@ def test_packings_table_matches_the_files(jammed_run, section):
 
 def test_every_packing_is_kept_and_taken_back_instead_of_regenerated(jammed_run, section, tmp_path):
     """Each packing job keeps a copy beside the record (here the quick config's
-    {results}/record/mrj2016/packings/); a job on a machine without results/ takes it back
+    {results}/record/packings/mrj2016/); a job on a machine without results/ takes it back
     (same seed and configuration) instead of making the packing again."""
     from conftest import copy_workflow
     from randmedia.kept_configurations import kept_path
 
-    keep_dir = f"{QUICK_RESULTS}/record/mrj2016/packings"
+    keep_dir = f"{QUICK_RESULTS}/record/packings/mrj2016"
     for system, k, path in packing_files(jammed_run, section):
         kept = read_dataset(jammed_run / kept_path(keep_dir, system, k))
         assert kept.identical(read_dataset(path))

@@ -3,7 +3,7 @@
 A paper-config MRJ packing costs CPU minutes to hours (mrj2016, docs/mrj2016.md), and a new
 machine starts without ``results/``. Each packing job of the paper config therefore keeps a
 copy of its output (the same compressed netCDF file, provenance included) under
-``record/mrj2016/packings/{system}/sample{k}.nc`` as soon as it is written, and a later job
+``record/packings/mrj2016/{system}/sample{k}.nc`` as soon as it is written, and a later job
 for the same sample takes that copy back instead of generating the packing again -- but
 only when the copy was made from the same inputs: its ``seed`` attribute and its
 configuration (``config_json``, less the keys in :data:`RUN_ONLY_KEYS` that cannot change a

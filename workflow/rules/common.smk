@@ -273,3 +273,21 @@ def record_root(paper):
     extended run never overwrites the committed record."""
     same = _paper_config(config, paper) == _paper_config(_PAPER_CONFIG, paper)
     return "record" if same else results_path("record")
+
+
+# --------------------------------------------------------------------------- mrj2016 packings
+
+#: what makes a packing (the rule's params but the run-only ones): the stages, contacts, order cutoff
+_PACKING_KEYS = ("route", "dilute", "compression", "inflation", "polish", "contacts", "bond_order_cutoff")
+
+
+# MRJ_JAMMED: defined in mrj2016_jammed.smk (read when the rule asks, after all includes)
+def mrj_keep_dir(system):
+    """record/packings/mrj2016 when this config makes the same packings of ``system`` as the paper
+    config (same seed, size and packing parameters -- whatever its sample counts, so a larger
+    ensemble adds to the kept packings), {results_dir}/record/packings/mrj2016 otherwise."""
+    paper = _PAPER_CONFIG["mrj2016"]["mrj"]
+    same = (config["seed"] == _PAPER_CONFIG["seed"]
+            and MRJ_JAMMED[system]["n_particles"] == paper[system]["n_particles"]
+            and all(MRJ_JAMMED[key] == paper[key] for key in _PACKING_KEYS))
+    return "record/packings/mrj2016" if same else results_path("record/packings/mrj2016")

@@ -18,21 +18,6 @@ MRJ_PACKINGS_TABLE = results_path("mrj2016/packings.csv")
 JAMMED_TARGETS = [MRJ_PACKINGS_TABLE]
 
 
-#: what makes a packing (the rule's params but the run-only ones): the stages, contacts, order cutoff
-_PACKING_KEYS = ("route", "dilute", "compression", "inflation", "polish", "contacts", "bond_order_cutoff")
-
-
-def mrj_keep_dir(system):
-    """record/mrj2016/packings when this config makes the same packings of ``system`` as the paper
-    config (same seed, size and packing parameters -- whatever its sample counts, so a larger
-    ensemble adds to the kept packings), {results_dir}/record/mrj2016/packings otherwise."""
-    paper = _PAPER_CONFIG["mrj2016"]["mrj"]
-    same = (config["seed"] == _PAPER_CONFIG["seed"]
-            and MRJ_JAMMED[system]["n_particles"] == paper[system]["n_particles"]
-            and all(MRJ_JAMMED[key] == paper[key] for key in _PACKING_KEYS))
-    return "record/mrj2016/packings" if same else results_path("record/mrj2016/packings")
-
-
 rule mrj2016_jammed_packing:
     """One strictly jammed packing (compression, inflation LPs, Torquato-Jiao polish);
     checkpoints and resumes."""
@@ -56,8 +41,9 @@ rule mrj2016_jammed_packing:
         checkpoint_seconds=MRJ_JAMMED["checkpoint_seconds"],
         seed=config["seed"],
         # every packing is kept beside the record as it finishes and taken back from there
-        # (same seed and configuration) instead of regenerated: record/mrj2016/packings/ for
-        # the paper config's packings (any sample count), {results_dir}/record/... for others
+        # (same seed and configuration) instead of regenerated: record/packings/mrj2016/ for
+        # the paper config's packings (any sample count), {results_dir}/record/... for others; outside
+        # record/mrj2016/, which the record rule replaces as a whole
         keep_dir=lambda wildcards: mrj_keep_dir(wildcards.system),
     benchmark:
         results_path("mrj2016/benchmarks/jammed_packing_{system}_sample{k}.tsv")
