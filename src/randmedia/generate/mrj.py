@@ -104,7 +104,7 @@ class MRJProtocol:
     inflation: inflation.InflationParameters = field(default_factory=inflation.InflationParameters)
     polish: TJParameters = field(default_factory=lambda: TJParameters(
         influence_gap=0.1, max_normal_strain=3e-3, max_shear_strain=3e-3, tolerance=1e-10,
-        max_lps=500, shrink_with_trust=True, backend="highs-hipo-vertex"))
+        max_lps=500, shrink_with_trust=True, backend="highs-ipm"))
     route: str = "dilute"
     dilute: DiluteTJ = field(default_factory=DiluteTJ)
 
