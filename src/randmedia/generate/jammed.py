@@ -188,13 +188,19 @@ class JammedPacking:
         return {f"tj_{k}": v for k, v in asdict(self.params).items()}
 
     def lp_history(self) -> dict:
-        """Per-LP record: stage (1 = Torquato-Jiao), phi after the LP, the LP's predicted
-        relative volume decrease -Tr epsilon, rows, solve seconds."""
-        h = self.history
-        return {"stage": np.ones(len(h["phi"]), dtype=np.int8), "phi": np.asarray(h["phi"]),
-                "predicted": -np.asarray(h["trace"], dtype=float),
-                "rows": np.asarray(h["rows"], dtype=np.int64),
-                "solve_seconds": np.asarray(h["seconds"], dtype=float)}
+        """Per-LP record (:func:`tj_lp_history`, stage 1 = Torquato-Jiao)."""
+        return tj_lp_history(self.history, stage=1)
+
+
+def tj_lp_history(history: dict, stage: int) -> dict:
+    """Per-LP record of a :func:`jam` history: ``stage`` (the caller's code of the stage),
+    phi after the LP, the LP's predicted relative volume decrease -Tr epsilon, rows, solve
+    seconds (empty arrays for an empty history)."""
+    phi = np.asarray(history.get("phi", []), dtype=float)
+    return {"stage": np.full(len(phi), stage, dtype=np.int8), "phi": phi,
+            "predicted": -np.asarray(history.get("trace", []), dtype=float),
+            "rows": np.asarray(history.get("rows", []), dtype=np.int64),
+            "solve_seconds": np.asarray(history.get("seconds", []), dtype=float)}
 
 
 def packing_fraction(positions: np.ndarray, box: np.ndarray, diameter: float = 1.0) -> float:

@@ -45,7 +45,7 @@ import numpy as np
 from randmedia.checkpoint import checkpoint_key
 from randmedia.generate import inflation, packing_lp
 from randmedia.generate.jammed import (ConstructionError, JammedPacking, TJParameters, jam,
-                                       packing_fraction, validate_packing_input)
+                                       packing_fraction, tj_lp_history, validate_packing_input)
 from randmedia.generate.lubachevsky_stillinger import LSParameters, compress
 from randmedia.generate.rsa import random_sequential_addition
 from randmedia.theory.balls import ball_volume
@@ -158,19 +158,15 @@ class MRJPacking(JammedPacking):
     def lp_history(self) -> dict:
         """Per-LP record of all stages in order: stage 0 = inflation, 2 = dilute TJ,
         1 = the TJ polish."""
-        polish = super().lp_history()
-        h, t = self.inflation_history, self.dilute_history
-        m, k = len(h.get("phi", [])), len(t.get("phi", []))
-        return {"stage": np.r_[np.zeros(m, dtype=np.int8), np.full(k, 2, dtype=np.int8), polish["stage"]],
-                "phi": np.r_[np.asarray(h.get("phi", []), dtype=float),
-                             np.asarray(t.get("phi", []), dtype=float), polish["phi"]],
-                "predicted": np.r_[self.positions.shape[1] * np.asarray(h.get("inflation", []), dtype=float),
-                                   -np.asarray(t.get("trace", []), dtype=float), polish["predicted"]],
-                "rows": np.r_[np.asarray(h.get("rows", []), dtype=np.int64),
-                              np.asarray(t.get("rows", []), dtype=np.int64), polish["rows"]],
-                "solve_seconds": np.r_[np.asarray(h.get("solve_seconds", []), dtype=float),
-                                       np.asarray(t.get("seconds", []), dtype=float),
-                                       polish["solve_seconds"]]}
+        h = self.inflation_history
+        m = len(h.get("phi", []))
+        inflation_record = {"stage": np.zeros(m, dtype=np.int8),
+                            "phi": np.asarray(h.get("phi", []), dtype=float),
+                            "predicted": self.positions.shape[1] * np.asarray(h.get("inflation", []), dtype=float),
+                            "rows": np.asarray(h.get("rows", []), dtype=np.int64),
+                            "solve_seconds": np.asarray(h.get("solve_seconds", []), dtype=float)}
+        stages = (inflation_record, tj_lp_history(self.dilute_history, stage=2), super().lp_history())
+        return {key: np.concatenate([record[key] for record in stages]) for key in inflation_record}
 
 
 def _key(seed: int, n: int, dim: int, protocol: MRJProtocol) -> str:
