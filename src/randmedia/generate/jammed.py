@@ -49,7 +49,9 @@ pair within the full influence sphere.
 
 Convergence. The packing is converged when an LP with the full bounds cannot
 lower the volume by more than ``tolerance`` (relative, -Tr epsilon <= tolerance;
-that last step is not applied), when the packing fraction grew by less than
+that last step is applied only if solved to a vertex, whose active rows close the
+contacts exactly -- after a first stage of interior points the polish often converges
+at its first LP, and without that step its contacts would stay open by 1e-10 - 1e-9 D), when the packing fraction grew by less than
 ``tolerance`` over the last two accepted LPs (TJ's criterion on the cell
 volume), or when the trust factor fell below ``MIN_TRUST`` = 1e-3 (no step
 raises phi any more; smaller bounds make HiGHS fail numerically). Changes of phi below ``tolerance`` count as round-off:
@@ -569,11 +571,12 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         record["final"] = int(final)
         phi_new = packing_fraction(new_positions, new_box, diameter)
         if -record["trace"] <= params.tolerance and trust == 1.0:
-            # the LP with the full bounds cannot lower the volume: jammed (TJ's criterion). The
-            # step is not applied -- except in the final phase, where the vertex step closes the
-            # contacts the interior points left open (by ~1e-9 D: it moves nothing else) unless
-            # that would lower phi beyond round-off
-            close = final and phi_new >= phi_old * (1.0 - params.tolerance)
+            # the LP with the full bounds cannot lower the volume: jammed (TJ's criterion). A
+            # step solved to a vertex is still applied: its active rows close the contacts an
+            # earlier stage left open (by ~1e-10 - 1e-9 D after interior points; it moves nothing
+            # else), unless that would lower phi beyond round-off. An interior point's step is not
+            close = (step_params.backend not in packing_lp.INTERIOR_BACKENDS
+                     and phi_new >= phi_old * (1.0 - params.tolerance))
             if close:
                 positions, box = new_positions, new_box
             for name in _HISTORY_KEYS + ("trust_next",):

@@ -76,6 +76,11 @@ BACKENDS = ("highs-hipo", "highs-hipo-vertex", "highs-ipm", "highs-ipx", "highs-
 #: seed 1: certified only at 1e-6 D); at these it passes as with a vertex (same phi to 4e-11)
 HIPO_OPTIONS: dict = {"ipm_optimality_tolerance": 1e-12, "primal_feasibility_tolerance": 1e-10,
                       "dual_feasibility_tolerance": 1e-10}
+#: HiGHS options of IPX + crossover (``highs-ipm``): at HiGHS' default primal feasibility
+#: tolerance (1e-7) the crossover's vertex may violate a row by ~2e-9 D (the N = 2000 packing
+#: of record/packings/mrj2016_uncertified: a step applied there overlaps a pair by 1.8e-9 D and
+#: its rescaling opens every contact by as much); the dual simplex's rows hold to 1e-11
+IPM_OPTIONS: dict = {"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10}
 #: the interior-point backends whose solution is not a vertex (no crossover)
 INTERIOR_BACKENDS = ("highs-hipo", "highs-ipx")
 
@@ -283,6 +288,9 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
     if backend in ("highs-ipm", "highs-ipx"):
         highs.setOptionValue("solver", "ipx")
         highs.setOptionValue("run_crossover", "on" if backend == "highs-ipm" else "off")
+        if backend == "highs-ipm":
+            for name, value in IPM_OPTIONS.items():
+                highs.setOptionValue(name, value)
     elif backend in ("highs-hipo", "highs-hipo-vertex"):
         # HiGHS' default hipo_system "choose" picks the normal equations for these LPs, which
         # the dense column (Gamma, or the strain of TJ) fills: 96-213 s instead of 2.5-4 s per

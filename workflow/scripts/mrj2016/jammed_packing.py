@@ -44,9 +44,12 @@ def make():
         "system": system, "sample": index, "Q6": q6, "crystal_fraction": crystal,
         "bond_order_cutoff": cutoff, "attempt": attempt})
     write_dataset(dataset, output, rule=snakemake.rule, seed=seed, config=config)
-    if kept is not None:
+    if kept is not None and analysis.jammed:
         keep(output, kept)
         log.info("kept a copy in %s", kept)
+    elif kept is not None:  # the record keeps certified packings only (tests/test_kept_packings.py)
+        log.warning("not kept: the packing did not pass the strict-jamming test at the %g D contact gap",
+                    params["contacts"]["gap_tolerance"])
 
 
 # the copy kept beside the record (randmedia.kept_configurations): taken back when it was made
