@@ -34,9 +34,8 @@ wildcard_constraints:
 
 
 include: "workflow/rules/common.smk"
-include: "workflow/rules/debye2020_hard_disks.smk"
+include: "workflow/rules/hard_particles.smk"
 include: "workflow/rules/debye2020.smk"
-include: "workflow/rules/mrj2016_equilibrium.smk"
 include: "workflow/rules/mrj2016_jammed.smk"
 include: "workflow/rules/mrj2016.smk"
 include: "workflow/rules/sphere2019.smk"

@@ -241,6 +241,12 @@ def _cross_checks(path: tuple[str, ...]) -> str:
             f"{doc}")
 
 
+def _table(header: list[str], rows: list[list[str]]) -> list[str]:
+    """A Markdown table: the header line, its rule, one line per row of cells."""
+    return (["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+            + ["| " + " | ".join(cells) + " |" for cells in rows])
+
+
 def _map_lines(section: _Section) -> list[str]:
     schema = section.schema
     names = schema.get("propertyNames", {}).get("pattern")
@@ -251,13 +257,10 @@ def _map_lines(section: _Section) -> list[str]:
     entries = section.entries or {}
     if entries:
         fields = list(schema["additionalProperties"].get("properties", {}))
-        lines += ["", "Entries in config/config.yaml:", "",
-                  "| name | " + " | ".join(fields) + " |",
-                  "|---|" + "---|" * len(fields)]
-        for name, entry in entries.items():
-            cells = [_code(_literal(entry[f])) if isinstance(entry, dict) and f in entry else "(default)"
-                     for f in fields]
-            lines.append(f"| {_code(name)} | " + " | ".join(cells) + " |")
+        rows = [[_code(name)] + [_code(_literal(entry[f])) if isinstance(entry, dict) and f in entry
+                                 else "(default)" for f in fields]
+                for name, entry in entries.items()]
+        lines += ["", "Entries in config/config.yaml:", ""] + _table(["name"] + fields, rows)
     return lines
 
 
@@ -275,10 +278,8 @@ def _section_lines(section: _Section) -> list[str]:
     if section.entries is not None:
         lines += _map_lines(section) + [""]
     if section.rows:
-        lines += ["| key | type | default | allowed | config.yaml | description |",
-                  "|---|---|---|---|---|---|"]
-        lines += ["| " + " | ".join(_cell(c) for c in row) + " |" for row in section.rows]
-        lines.append("")
+        lines += _table(["key", "type", "default", "allowed", "config.yaml", "description"],
+                        [[_cell(c) for c in row] for row in section.rows]) + [""]
     return lines
 
 

@@ -5,7 +5,7 @@
 # * Sec. V: chords and lineal path (Figs. 6, 7); surface correlation functions and
 #   pore sizes on Ma-Torquato level sets tuned to the exact s (Figs. 3-5); fits;
 # * Sec. VI: digitized overlapping disks (validation of every estimator against the
-#   exact Eqs. 32-39) and equilibrium hard disks (images from debye2020_hard_disks.smk,
+#   exact Eqs. 32-39) and equilibrium hard disks (images from hard_particles.smk,
 #   included before this file) -> Figs. 8-12;
 # * tables/numbers.csv, comparison.csv and comparison_notes.csv.
 #
@@ -287,7 +287,7 @@ LEVEL_SET_PORES = results_path("debye2020/descriptors/{system}_pores.nc")
 SURFACE_PORE_FITS = results_path("debye2020/fits/surface_pores.nc")
 DISKS_SYSTEM = f"overlapping_disks_phi{DISKS['phi2']:g}"
 COMPARISON_PHI2 = f"{DISKS['phi2']:g}"  # Sec. VI: all three models at this phi2
-# Equilibrium hard disks come from debye2020_hard_disks.smk (included before this file):
+# Equilibrium hard disks come from hard_particles.smk (included before this file):
 # HARD_DISKS_SAMPLES, a list of results/debye2020/hard_disks/phi0.3/sample{k}.nc.
 HARD_DISKS_SYSTEM = f"hard_disks_{Path(HARD_DISKS_SAMPLES[0]).parent.name}"
 

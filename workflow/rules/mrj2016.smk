@@ -2,7 +2,7 @@
 # comparison systems, figures and tables.
 #
 #   generate  overlapping spheres, fcc / bcc lattices (here); the equilibrium liquid
-#             (mrj2016_equilibrium.smk: EQUILIBRIUM_SAMPLES) and the MRJ packings
+#             (hard_particles.smk: EQUILIBRIUM_SAMPLES) and the MRJ packings
 #             (mrj2016_jammed.smk: MRJ_SAMPLES, MRJ_LARGE_SAMPLES), included before.
 #   describe  per chunk of samples: correlation (Appendix A), spectral (Sec. IV),
 #             points (pore sizes, E_V, covering radius; Sec. V), windows (number

@@ -53,7 +53,9 @@ listed pairs. Variables ``[s_0, s_1, ..., Gamma]``.
 from __future__ import annotations
 
 import time
+from collections.abc import Mapping
 from dataclasses import dataclass
+from types import MappingProxyType
 
 import numpy as np
 import scipy.sparse as sp
@@ -74,13 +76,15 @@ BACKENDS = ("highs-hipo", "highs-hipo-vertex", "highs-ipm", "highs-ipx", "highs-
 #: tolerances; at HiGHS' defaults (1e-8, 1e-7) the TJ polish then leaves its contacts open
 #: by ~1e-8 D and no packing passes the jamming test at the 1e-9 D contact gap (N = 500,
 #: seed 1: certified only at 1e-6 D); at these it passes as with a vertex (same phi to 4e-11)
-HIPO_OPTIONS: dict = {"ipm_optimality_tolerance": 1e-12, "primal_feasibility_tolerance": 1e-10,
-                      "dual_feasibility_tolerance": 1e-10}
+HIPO_OPTIONS: Mapping[str, float] = MappingProxyType({
+    "ipm_optimality_tolerance": 1e-12, "primal_feasibility_tolerance": 1e-10,
+    "dual_feasibility_tolerance": 1e-10})
 #: HiGHS options of IPX + crossover (``highs-ipm``): at HiGHS' default primal feasibility
 #: tolerance (1e-7) the crossover's vertex may violate a row by ~2e-9 D (the N = 2000 packing
 #: of record/packings/mrj2016_uncertified: a step applied there overlaps a pair by 1.8e-9 D and
 #: its rescaling opens every contact by as much); the dual simplex's rows hold to 1e-11
-IPM_OPTIONS: dict = {"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10}
+IPM_OPTIONS: Mapping[str, float] = MappingProxyType({
+    "primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10})
 #: the interior-point backends whose solution is not a vertex (no crossover)
 INTERIOR_BACKENDS = ("highs-hipo", "highs-ipx")
 
