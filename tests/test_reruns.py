@@ -357,18 +357,18 @@ PARAMETER_CASES = {
         [describe_job("correlation"), describe_job("spectral"), describe_job("points")]),
     "mrj2016_windows_fit": (  # used by the merge alone: no chunk job reruns
         "mrj2016:\n  number_variance:\n    fit_r_min: 1.25\n",
-        [describe_job("windows", "merge"), rule_job("mrj2016_figure", nn="09"),
-         rule_job("mrj2016_figure", nn="10"), rule_job("mrj2016_comparison")],
-        [describe_job("windows", "chunk"), describe_job("points"), rule_job("mrj2016_figure", nn="08")]),
+        [describe_job("windows", "merge"), rule_job("mrj2016_fig09"),
+         rule_job("mrj2016_fig10"), rule_job("mrj2016_comparison")],
+        [describe_job("windows", "chunk"), describe_job("points"), rule_job("mrj2016_fig08")]),
     "mrj2016_spectral": (
         "mrj2016:\n  spectral:\n    nufft_eps: 1.0e-8\n",
         [describe_job("spectral"), rule_job("mrj2016_comparison")],
         [describe_job("correlation"), describe_job("points"), describe_job("windows"),
-         rule_job("mrj2016_figure", nn="03")]),
+         rule_job("mrj2016_fig03")]),
     "mrj2016_figures": (
         "mrj2016:\n  figures:\n    render_side: 6.0\n",
-        [rule_job("mrj2016_figure", nn="01")],
-        [rule_job("mrj2016_figure", nn="02"), describe_job("windows")]),
+        [rule_job("mrj2016_fig01")],
+        [rule_job("mrj2016_fig02"), describe_job("windows")]),
     "debye2020": (
         "debye2020:\n  overlapping_disks:\n    compare_r_max_over_R: 3.5\n",
         [rule_job("debye2020_overlapping_disks_figure"), rule_job("debye2020_comparison")],

@@ -87,6 +87,23 @@ def report_validation_figure(path, paper, caption):
                   subcategory="Validation")
 
 
+def figure_outputs(paper, number, second_reading=False, in_report=False):
+    """Output files of figure ``number`` of ``paper`` (made by {paper}_figNN): figNN.pdf and
+    figNN.png under its figures/ folder; with ``second_reading`` (sphere2019) also
+    figNN_alpha_cubed (the same figure for the second reading of its Eq. 12b); with
+    ``in_report`` (rule outputs) the PNGs are marked for the HTML report (report_figure)."""
+    stem = results_path(f"{paper}/figures/fig{number:02d}")
+    files = {ext: f"{stem}.{ext}" for ext in ("pdf", "png")}
+    if second_reading:
+        files.update({f"alpha_cubed_{ext}": f"{stem}_alpha_cubed.{ext}" for ext in ("pdf", "png")})
+    if in_report:  # the PNGs marked for the HTML report
+        files["png"] = report_figure(files["png"], paper, number)
+        if second_reading:
+            files["alpha_cubed_png"] = report_figure(files["alpha_cubed_png"], paper, number,
+                                                     caption="alpha_cubed.rst")
+    return files
+
+
 _ROMAN = {1: "I", 2: "II", 3: "III", 4: "IV", 5: "V"}
 
 
@@ -129,14 +146,6 @@ def level_set_files(system):
 def comparison_models():
     """The Sec. VI comparison systems (overlapping and equilibrium hard disks)."""
     return [DISKS_SYSTEM, HARD_DISKS_SYSTEM]
-
-
-def figure_outputs(number, in_report=False):
-    """figNN.pdf and figNN.png of debye2020; with ``in_report`` (rule outputs) the PNG is
-    marked for the HTML report (report_figure)."""
-    png = results_path(f"debye2020/figures/fig{number:02d}.png")
-    return {"pdf": results_path(f"debye2020/figures/fig{number:02d}.pdf"),
-            "png": report_figure(png, "debye2020", number) if in_report else png}
 
 
 # COMPARISON_PHI2, DISKS_SYSTEM, HARD_DISKS_SYSTEM, MEDIA_CHORDS, DISKS_CHORDS: defined in debye2020.smk (included after this file)
@@ -234,22 +243,6 @@ def m_describe_inputs(wildcards):
 
 # --------------------------------------------------------------------------- sphere2019 helpers
 # (called by the rules of workflow/rules/sphere2019.smk; they read that file's constants)
-
-
-def sphere_figure(number, second_reading=False, in_report=False):
-    """Output files of the rule of paper figure ``number``; with ``second_reading`` also
-    figNN_alpha_cubed (the same figure for the second reading of Eq. 12b); with ``in_report``
-    (rule outputs) the PNGs are marked for the HTML report (report_figure)."""
-    files = {ext: results_path(f"sphere2019/figures/fig{number:02d}.{ext}") for ext in ("pdf", "png")}
-    if second_reading:
-        files.update({f"alpha_cubed_{ext}": results_path(f"sphere2019/figures/fig{number:02d}_alpha_cubed.{ext}")
-                      for ext in ("pdf", "png")})
-    if in_report:  # the PNGs marked for the HTML report
-        files["png"] = report_figure(files["png"], "sphere2019", number)
-        if second_reading:
-            files["alpha_cubed_png"] = report_figure(files["alpha_cubed_png"], "sphere2019", number,
-                                                     caption="alpha_cubed.rst")
-    return files
 
 
 # SPHERE_DESCRIPTOR: defined in sphere2019.smk (included after this file)

@@ -76,42 +76,6 @@ rule debye2020_media_s2:
         "../scripts/debye2020/media_s2.py"
 
 
-rule debye2020_fig01:
-    """Fig. 1: one construction per volume fraction."""
-    input:
-        samples=expand(MEDIA_SAMPLE, phi2=MEDIA_PHI2, k=0),
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(1, in_report=True),
-    params:
-        figure=1,
-        settings={"a": MEDIA["a"]},
-    benchmark:
-        results_path("debye2020/benchmarks/fig01.tsv")
-    log:
-        results_path("debye2020/logs/fig01.log"),
-    script:
-        "../scripts/debye2020/figure.py"
-
-
-rule debye2020_fig02:
-    """Fig. 2: S2 of the constructions against the targets."""
-    input:
-        s2=expand(MEDIA_S2, phi2=MEDIA_PHI2),
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(2, in_report=True),
-    params:
-        figure=2,
-        settings={"lc": MEDIA["lc"]},
-    benchmark:
-        results_path("debye2020/benchmarks/fig02.tsv")
-    log:
-        results_path("debye2020/logs/fig02.log"),
-    script:
-        "../scripts/debye2020/figure.py"
-
-
 rule debye2020_media_chords:
     """L(z) and p(z) of the void phase of the constructions at one phi2 (Sec. V C-D)."""
     input:
@@ -150,44 +114,6 @@ rule debye2020_fit_lineal_path:
         results_path("debye2020/logs/fit_lineal_path.log"),
     script:
         "../scripts/debye2020/fit_lineal_path.py"
-
-
-rule debye2020_fig06:
-    """Fig. 6: lineal-path function and fitted L_w."""
-    input:
-        chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
-        fits=LINEAL_FITS,
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(6, in_report=True),
-    params:
-        figure=6,
-        settings={"a": MEDIA["a"]},
-    benchmark:
-        results_path("debye2020/benchmarks/fig06.tsv")
-    log:
-        results_path("debye2020/logs/fig06.log"),
-    script:
-        "../scripts/debye2020/figure.py"
-
-
-rule debye2020_fig07:
-    """Fig. 7: matrix chord-length density."""
-    input:
-        chords=expand(MEDIA_CHORDS, phi2=MEDIA_PHI2),
-        fits=LINEAL_FITS,
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(7, in_report=True),
-    params:
-        figure=7,
-        settings={"a": MEDIA["a"]},
-    benchmark:
-        results_path("debye2020/benchmarks/fig07.tsv")
-    log:
-        results_path("debye2020/logs/fig07.log"),
-    script:
-        "../scripts/debye2020/figure.py"
 
 
 DISKS = config["debye2020"]["overlapping_disks"]
@@ -405,158 +331,56 @@ rule debye2020_comparison:
         "../scripts/debye2020/comparison.py"
 
 
-# --------------------------------------------------------------------------- figures 3-5, 8-12
+# --------------------------------------------------------------------------- figures
 
 MEDIA_LEVEL_SET = [level_set_files(f"media_phi{name}") for name in MEDIA_PHI2]
 LEVEL_SET_FIGURE = results_path("debye2020/validation/overlapping_disks_level_set.pdf")
 
 
-rule debye2020_fig03:
-    """Fig. 3: F_sv of the Debye media per phi2, with Eq. (24)."""
-    input:
-        surface=[files["surface"] for files in MEDIA_LEVEL_SET],
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(3, in_report=True),
-    params:
-        figure=3,
-        settings={"a": MEDIA["a"]},
-    benchmark:
-        results_path("debye2020/benchmarks/fig03.tsv")
-    log:
-        results_path("debye2020/logs/fig03.log"),
-    script:
-        "../scripts/debye2020/figure.py"
-
-
-rule debye2020_fig04:
-    """Fig. 4: F_ss of the Debye media per phi2, with Eq. (26)."""
-    input:
-        surface=[files["surface"] for files in MEDIA_LEVEL_SET],
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(4, in_report=True),
-    params:
-        figure=4,
-        settings={"a": MEDIA["a"]},
-    benchmark:
-        results_path("debye2020/benchmarks/fig04.tsv")
-    log:
-        results_path("debye2020/logs/fig04.log"),
-    script:
-        "../scripts/debye2020/figure.py"
-
-
-rule debye2020_fig05:
-    """Fig. 5: P(delta) phi1/s per phi2 with Eq. (27); <delta>(phi2) with Eq. (28)."""
-    input:
-        pores=[files["pores"] for files in MEDIA_LEVEL_SET],
-        fits=SURFACE_PORE_FITS,
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(5, in_report=True),
-    params:
-        figure=5,
-        settings={"a": MEDIA["a"]},
-    benchmark:
-        results_path("debye2020/benchmarks/fig05.tsv")
-    log:
-        results_path("debye2020/logs/fig05.log"),
-    script:
-        "../scripts/debye2020/figure.py"
-
-
-rule debye2020_fig08:
-    """Fig. 8: one image of overlapping disks and one of equilibrium hard disks."""
-    input:
-        samples=[f"{DISKS_DIR}/sample0.nc", HARD_DISKS_SAMPLES[0]],
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(8, in_report=True),
-    params:
-        figure=8,
-        settings={"titles": ["overlapping disks", "equilibrium hard disks"]},
-    benchmark:
-        results_path("debye2020/benchmarks/fig08.tsv")
-    log:
-        results_path("debye2020/logs/fig08.log"),
-    script:
-        "../scripts/debye2020/figure.py"
-
-
 SECTION6_PARAMS = {"a": MEDIA["a"], "radius": DISKS["radius"], "phi2": DISKS["phi2"]}
 
 
-rule debye2020_fig09:
-    """Fig. 9: chi_V, F_sv, F_ss of the three models at the comparison phi2, against r s."""
-    input:
-        **section6_inputs(9),
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(9, in_report=True),
-    params:
-        figure=9,
-        settings=SECTION6_PARAMS,
-    benchmark:
-        results_path("debye2020/benchmarks/fig09.tsv")
-    log:
-        results_path("debye2020/logs/fig09.log"),
-    script:
-        "../scripts/debye2020/figure.py"
+#: each figure's inputs and the config values its function (randmedia.plot.debye2020.FIGURES)
+#: reads; the rules debye2020_figNN (Figs. 1-12) are written by the loop below
+DEBYE2020_FIGURE_INPUTS = {
+    1: {"samples": expand(MEDIA_SAMPLE, phi2=MEDIA_PHI2, k=0)},  # one construction per phi2
+    2: {"s2": expand(MEDIA_S2, phi2=MEDIA_PHI2)},  # S2 against the targets
+    3: {"surface": [files["surface"] for files in MEDIA_LEVEL_SET]},  # F_sv with Eq. (24)
+    4: {"surface": [files["surface"] for files in MEDIA_LEVEL_SET]},  # F_ss with Eq. (26)
+    # P(delta) phi1/s with Eq. (27); <delta>(phi2) with Eq. (28)
+    5: {"pores": [files["pores"] for files in MEDIA_LEVEL_SET], "fits": SURFACE_PORE_FITS},
+    6: {"chords": expand(MEDIA_CHORDS, phi2=MEDIA_PHI2), "fits": LINEAL_FITS},  # L(z), fitted L_w
+    7: {"chords": expand(MEDIA_CHORDS, phi2=MEDIA_PHI2), "fits": LINEAL_FITS},  # matrix chords
+    8: {"samples": [f"{DISKS_DIR}/sample0.nc", HARD_DISKS_SAMPLES[0]]},  # one image per model
+    # Sec. VI, the three models at the comparison phi2: chi_V, F_sv, F_ss; P(delta); L(z); p(z)
+    **{number: section6_inputs(number) for number in (9, 10, 11, 12)},
+}
+DEBYE2020_FIGURE_PARAMS = {
+    **{number: {"a": MEDIA["a"]} for number in (1, 3, 4, 5, 6, 7)},
+    2: {"lc": MEDIA["lc"]},
+    8: {"titles": ["overlapping disks", "equilibrium hard disks"]},
+    **{number: SECTION6_PARAMS for number in (9, 10, 11, 12)},
+}
 
+for _number in DEBYE2020_FIGURE_INPUTS:
 
-rule debye2020_fig10:
-    """Fig. 10: P(delta) of the three models, against delta s."""
-    input:
-        **section6_inputs(10),
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(10, in_report=True),
-    params:
-        figure=10,
-        settings=SECTION6_PARAMS,
-    benchmark:
-        results_path("debye2020/benchmarks/fig10.tsv")
-    log:
-        results_path("debye2020/logs/fig10.log"),
-    script:
-        "../scripts/debye2020/figure.py"
-
-
-rule debye2020_fig11:
-    """Fig. 11: L(z) of the three models, against z s."""
-    input:
-        **section6_inputs(11),
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(11, in_report=True),
-    params:
-        figure=11,
-        settings=SECTION6_PARAMS,
-    benchmark:
-        results_path("debye2020/benchmarks/fig11.tsv")
-    log:
-        results_path("debye2020/logs/fig11.log"),
-    script:
-        "../scripts/debye2020/figure.py"
-
-
-rule debye2020_fig12:
-    """Fig. 12: p(z) of the three models, against z s."""
-    input:
-        **section6_inputs(12),
-        code=script_sources("../scripts/debye2020/figure.py"),
-    output:
-        **figure_outputs(12, in_report=True),
-    params:
-        figure=12,
-        settings=SECTION6_PARAMS,
-    benchmark:
-        results_path("debye2020/benchmarks/fig12.tsv")
-    log:
-        results_path("debye2020/logs/fig12.log"),
-    script:
-        "../scripts/debye2020/figure.py"
+    rule:
+        name:
+            f"debye2020_fig{_number:02d}"
+        input:
+            **DEBYE2020_FIGURE_INPUTS[_number],
+            code=script_sources("../scripts/debye2020/figure.py"),
+        output:
+            **figure_outputs("debye2020", _number, in_report=True),
+        params:
+            figure=_number,
+            settings=DEBYE2020_FIGURE_PARAMS[_number],
+        benchmark:
+            results_path(f"debye2020/benchmarks/fig{_number:02d}.tsv")
+        log:
+            results_path(f"debye2020/logs/fig{_number:02d}.log"),
+        script:
+            "../scripts/debye2020/figure.py"
 
 
 rule debye2020_overlapping_disks_level_set_figure:
@@ -587,8 +411,8 @@ DEBYE2020_TARGETS = HARD_DISKS_TARGETS + [
     DISKS_FIGURE.replace(".pdf", ".png"),
     LEVEL_SET_FIGURE,
     LEVEL_SET_FIGURE.replace(".pdf", ".png"),
-] + [path for number in (1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12)
-     for path in figure_outputs(number).values()]
+] + [path for number in DEBYE2020_FIGURE_INPUTS
+     for path in figure_outputs("debye2020", number).values()]
 
 
 rule debye2020:

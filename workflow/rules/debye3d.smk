@@ -202,57 +202,30 @@ DEBYE3D_FIGURE_OUTPUTS = {
     for name in DEBYE3D_FIGURES}
 
 
-rule debye3d_figure_media:
-    """Mid-plane slices of sample 0 of every Debye system."""
-    input:
-        samples=expand(DEBYE3D_SAMPLE, system=DEBYE3D_DEBYE_SYSTEMS, k=0),
-        code=script_sources("../scripts/debye3d/figure.py"),
-    output:
-        **DEBYE3D_FIGURE_OUTPUTS["media"],
-    params:
-        figure="media",
-        settings={"a": config["debye3d"]["media"]["a"]},
-    benchmark:
-        results_path("debye3d/benchmarks/figure_media.tsv")
-    log:
-        results_path("debye3d/logs/figure_media.log"),
-    script:
-        "../scripts/debye3d/figure.py"
+#: each figure's inputs and the config values its function (randmedia.plot.debye3d.FIGURES)
+#: reads; the rules debye3d_figure_{name} are written by the loop below
+DEBYE3D_FIGURE_INPUTS = {
+    "media": {"samples": expand(DEBYE3D_SAMPLE, system=DEBYE3D_DEBYE_SYSTEMS, k=0)},  # mid-planes
+    "s2": {"s2": expand(DEBYE3D_S2, system=DEBYE3D_SYSTEMS)},  # chi_V against the exact one
+    **{name: {"descriptors": expand(files, system=DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS)}
+       for name, files in (("surface", DEBYE3D_SURFACE), ("pores", DEBYE3D_PORES),
+                           ("chords", DEBYE3D_CHORDS))},
+}
+DEBYE3D_FIGURE_PARAMS = {"media": {"a": config["debye3d"]["media"]["a"]}}
 
-
-rule debye3d_figure_s2:
-    """chi_V of every system against the exact one."""
-    input:
-        s2=expand(DEBYE3D_S2, system=DEBYE3D_SYSTEMS),
-        code=script_sources("../scripts/debye3d/figure.py"),
-    output:
-        **DEBYE3D_FIGURE_OUTPUTS["s2"],
-    params:
-        figure="s2",
-    benchmark:
-        results_path("debye3d/benchmarks/figure_s2.tsv")
-    log:
-        results_path("debye3d/logs/figure_s2.log"),
-    script:
-        "../scripts/debye3d/figure.py"
-
-
-for _name, _files, _systems in (
-    ("surface", DEBYE3D_SURFACE, DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
-    ("pores", DEBYE3D_PORES, DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
-    ("chords", DEBYE3D_CHORDS, DEBYE3D_LEVEL_SET_SYSTEMS + DEBYE3D_WINDOW_SYSTEMS),
-):
+for _name in DEBYE3D_FIGURES:
 
     rule:
         name:
             f"debye3d_figure_{_name}"
         input:
-            descriptors=expand(_files, system=_systems),
+            **DEBYE3D_FIGURE_INPUTS[_name],
             code=script_sources("../scripts/debye3d/figure.py"),
         output:
             **DEBYE3D_FIGURE_OUTPUTS[_name],
         params:
             figure=_name,
+            settings=DEBYE3D_FIGURE_PARAMS.get(_name, {}),
         benchmark:
             results_path(f"debye3d/benchmarks/figure_{_name}.tsv")
         log:

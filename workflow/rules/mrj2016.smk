@@ -8,9 +8,10 @@
 #             points (pore sizes, E_V, covering radius; Sec. V), windows (number
 #             variance, f_R(N); Sec. VI); then one merged file per system and kind.
 #   render    Figs. 1-13, Tables I-V, comparison.csv (+ comparison_notes.csv). The figure
-#             rule runs ../scripts/mrj2016/figure.py: params.figure selects the function
-#             of randmedia.plot.mrj2016.FIGURES (figNN draws Fig. NN), params.settings
-#             holds the config values it reads (convention: randmedia.plot.rule).
+#             rules mrj2016_figNN (one loop over MRJ2016_FIGURE_INPUTS, as in every paper) run
+#             ../scripts/mrj2016/figure.py: params.figure selects the function of
+#             randmedia.plot.mrj2016.FIGURES (figNN draws Fig. NN), params.settings holds
+#             the config values it reads (convention: randmedia.plot.rule).
 #
 # A system with no samples in the config is left out of every descriptor, figure
 # and table that would use it.
@@ -164,7 +165,7 @@ rule mrj2016_describe:
 
 # --------------------------------------------------------------------------- render
 
-M_FIGURE_INPUTS = {
+MRJ2016_FIGURE_INPUTS = {
     1: {f"config_{s}": M_CONFIG.format(system=s, k=0) for s in ("overlapping", "equilibrium", "mrj")
         if m_have(s)},
     2: {},
@@ -187,7 +188,7 @@ M_FIGURE_INPUTS = {
 #: the config values each figure's function (randmedia.plot.mrj2016.FIGURES) reads: a figure
 #: gets only its own, so that e.g. figures.render_side reruns Fig. 1 alone
 _M_PHI = {"overlapping_phi": M_OVERLAPPING["phi"]}
-M_FIGURE_PARAMS = {
+MRJ2016_FIGURE_PARAMS = {
     1: {"figures": M_FIGURES},
     2: {},
     3: _M_PHI,
@@ -204,27 +205,25 @@ M_FIGURE_PARAMS = {
 }
 
 
-rule mrj2016_figure:
-    """Figure NN of the paper (figNN.pdf and figNN.png)."""
-    input:
-        unpack(lambda wildcards: M_FIGURE_INPUTS[int(wildcards.nn)]),
-        code=script_sources("../scripts/mrj2016/figure.py"),
-    output:
-        pdf=results_path("mrj2016/figures/fig{nn}.pdf"),
-        # one caption for the 13 figures (a Jinja template branching on the wildcard nn)
-        png=report(results_path("mrj2016/figures/fig{nn}.png"), caption="../report/mrj2016/figures.rst",
-                   category="mrj2016", subcategory="Fig. {nn}"),
-    params:
-        figure=lambda wildcards: int(wildcards.nn),
-        settings=lambda wildcards: M_FIGURE_PARAMS[int(wildcards.nn)],
-    benchmark:
-        results_path("mrj2016/benchmarks/fig{nn}.tsv")
-    log:
-        results_path("mrj2016/logs/fig{nn}.log"),
-    wildcard_constraints:
-        nn="|".join(f"{n:02d}" for n in range(1, 14)),
-    script:
-        "../scripts/mrj2016/figure.py"
+for _number in MRJ2016_FIGURE_INPUTS:
+
+    rule:
+        name:
+            f"mrj2016_fig{_number:02d}"
+        input:
+            **MRJ2016_FIGURE_INPUTS[_number],
+            code=script_sources("../scripts/mrj2016/figure.py"),
+        output:
+            **figure_outputs("mrj2016", _number, in_report=True),
+        params:
+            figure=_number,
+            settings=MRJ2016_FIGURE_PARAMS[_number],
+        benchmark:
+            results_path(f"mrj2016/benchmarks/fig{_number:02d}.tsv")
+        log:
+            results_path(f"mrj2016/logs/fig{_number:02d}.log"),
+        script:
+            "../scripts/mrj2016/figure.py"
 
 
 M_TABLE_INPUTS = {
@@ -285,7 +284,7 @@ rule mrj2016_comparison:
         "../scripts/mrj2016/comparison.py"
 
 
-M_FIGURES_OUT = [results_path(f"mrj2016/figures/fig{n:02d}.{ext}") for n in range(1, 14) for ext in ("pdf", "png")]
+M_FIGURES_OUT = [path for n in MRJ2016_FIGURE_INPUTS for path in figure_outputs("mrj2016", n).values()]
 M_TABLES_OUT = [results_path(f"mrj2016/tables/table{n}.csv") for n in M_TABLES]
 
 MRJ2016_TARGETS = (
@@ -300,16 +299,6 @@ rule mrj2016:
     """Everything of mrj2016: Figs. 1-13, Tables I-V, comparison."""
     input:
         MRJ2016_TARGETS,
-
-
-for _n in range(1, 14):
-
-    rule:
-        name:
-            f"mrj2016_fig{_n:02d}"
-        input:
-            results_path(f"mrj2016/figures/fig{_n:02d}.pdf"),
-            results_path(f"mrj2016/figures/fig{_n:02d}.png"),
 
 
 for _n in M_TABLES:

@@ -172,150 +172,50 @@ rule sphere2019_comparison:
         "../scripts/sphere2019/comparison.py"
 
 
-rule sphere2019_fig01:
-    """Fig. 1: the spherical-cap window."""
-    input:
-        code=script_sources("../scripts/sphere2019/figure.py"),
-    output:
-        **sphere_figure(1, in_report=True),
-    params:
-        figure=1,
-    benchmark:
-        results_path("sphere2019/benchmarks/fig01.tsv")
-    log:
-        results_path("sphere2019/logs/fig01.log"),
-    script:
-        "../scripts/sphere2019/figure.py"
+#: each figure's inputs (the alpha_cubed ones: the second reading of Eq. 12b, drawn as
+#: figNN_alpha_cubed) and the config values its function (randmedia.plot.sphere2019.FIGURES)
+#: reads; the rules sphere2019_figNN (Figs. 1-8) are written by the loop below
+SPHERE2019_FIGURE_INPUTS = {
+    1: {},  # the spherical-cap window
+    2: {"configs": expand(SPHERE_CONFIG, system=["icosahedral", "fibonacci"]),  # grids
+        "descriptors": sphere_descriptors(["icosahedral", "fibonacci"])},
+    3: {"configs": expand(SPHERE_CONFIG, system=["poisson", "uniform"]),  # Eqs. (6), (7)
+        "descriptors": sphere_descriptors(["poisson", "uniform"])},
+    4: {"descriptors": sphere_descriptors(SPHERE_R15)},  # R = 15 fluids, inset sigma^2*(a)
+    5: {"descriptors": sphere_descriptors(SPHERE_ALPHA),  # R = 5, alpha = 1, 3, 6
+        "alpha_cubed": sphere_descriptors(SPHERE_ALPHA_CUBED)},
+    6: {"configs": expand(SPHERE_CONFIG, system=SPHERE_ALPHA),  # snapshots
+        "alpha_cubed": expand(SPHERE_CONFIG, system=SPHERE_ALPHA_CUBED)},
+    7: {"descriptors": sphere_descriptors(SPHERE_FIG08),  # geodesic g2 (and LJ when configured)
+        "alpha_cubed": sphere_descriptors(SPHERE_FIG08_CUBED)},
+    8: {"descriptors": sphere_descriptors(SPHERE_FIG08),  # sigma^2 from g2 by Eq. (4)
+        "alpha_cubed": sphere_descriptors(SPHERE_FIG08_CUBED)},
+}
+SPHERE2019_FIGURE_PARAMS = {4: {"a_min": SPHERE_A_MIN_PLOT}, 5: {"a_min": SPHERE_A_MIN_PLOT}}
+
+for _number in SPHERE2019_FIGURE_INPUTS:
+
+    rule:
+        name:
+            f"sphere2019_fig{_number:02d}"
+        input:
+            **SPHERE2019_FIGURE_INPUTS[_number],
+            code=script_sources("../scripts/sphere2019/figure.py"),
+        output:
+            **figure_outputs("sphere2019", _number, second_reading=_number >= 5, in_report=True),
+        params:
+            figure=_number,
+            settings=SPHERE2019_FIGURE_PARAMS.get(_number, {}),
+        benchmark:
+            results_path(f"sphere2019/benchmarks/fig{_number:02d}.tsv")
+        log:
+            results_path(f"sphere2019/logs/fig{_number:02d}.log"),
+        script:
+            "../scripts/sphere2019/figure.py"
 
 
-rule sphere2019_fig02:
-    """Fig. 2: icosahedral and Fibonacci grids and their scaled number variance."""
-    input:
-        configs=expand(SPHERE_CONFIG, system=["icosahedral", "fibonacci"]),
-        descriptors=sphere_descriptors(["icosahedral", "fibonacci"]),
-        code=script_sources("../scripts/sphere2019/figure.py"),
-    output:
-        **sphere_figure(2, in_report=True),
-    params:
-        figure=2,
-    benchmark:
-        results_path("sphere2019/benchmarks/fig02.tsv")
-    log:
-        results_path("sphere2019/logs/fig02.log"),
-    script:
-        "../scripts/sphere2019/figure.py"
-
-
-rule sphere2019_fig03:
-    """Fig. 3: Poisson and uniform points; Eqs. (6) and (7)."""
-    input:
-        configs=expand(SPHERE_CONFIG, system=["poisson", "uniform"]),
-        descriptors=sphere_descriptors(["poisson", "uniform"]),
-        code=script_sources("../scripts/sphere2019/figure.py"),
-    output:
-        **sphere_figure(3, in_report=True),
-    params:
-        figure=3,
-    benchmark:
-        results_path("sphere2019/benchmarks/fig03.tsv")
-    log:
-        results_path("sphere2019/logs/fig03.log"),
-    script:
-        "../scripts/sphere2019/figure.py"
-
-
-rule sphere2019_fig04:
-    """Fig. 4: scaled number variance of the R = 15 fluids (inset: sigma^2*(a))."""
-    input:
-        descriptors=sphere_descriptors(SPHERE_R15),
-        code=script_sources("../scripts/sphere2019/figure.py"),
-    output:
-        **sphere_figure(4, in_report=True),
-    params:
-        figure=4,
-        settings={"a_min": SPHERE_A_MIN_PLOT},
-    benchmark:
-        results_path("sphere2019/benchmarks/fig04.tsv")
-    log:
-        results_path("sphere2019/logs/fig04.log"),
-    script:
-        "../scripts/sphere2019/figure.py"
-
-
-rule sphere2019_fig05:
-    """Fig. 5: scaled number variance at R = 5 for alpha = 1, 3, 6 (both readings of Eq. 12b)."""
-    input:
-        descriptors=sphere_descriptors(SPHERE_ALPHA),
-        alpha_cubed=sphere_descriptors(SPHERE_ALPHA_CUBED),
-        code=script_sources("../scripts/sphere2019/figure.py"),
-    output:
-        **sphere_figure(5, second_reading=True, in_report=True),
-    params:
-        figure=5,
-        settings={"a_min": SPHERE_A_MIN_PLOT},
-    benchmark:
-        results_path("sphere2019/benchmarks/fig05.tsv")
-    log:
-        results_path("sphere2019/logs/fig05.log"),
-    script:
-        "../scripts/sphere2019/figure.py"
-
-
-rule sphere2019_fig06:
-    """Fig. 6: snapshots for alpha = 1, 3, 6 (both readings of Eq. 12b)."""
-    input:
-        configs=expand(SPHERE_CONFIG, system=SPHERE_ALPHA),
-        alpha_cubed=expand(SPHERE_CONFIG, system=SPHERE_ALPHA_CUBED),
-        code=script_sources("../scripts/sphere2019/figure.py"),
-    output:
-        **sphere_figure(6, second_reading=True, in_report=True),
-    params:
-        figure=6,
-    benchmark:
-        results_path("sphere2019/benchmarks/fig06.tsv")
-    log:
-        results_path("sphere2019/logs/fig06.log"),
-    script:
-        "../scripts/sphere2019/figure.py"
-
-
-rule sphere2019_fig07:
-    """Fig. 7: geodesic g2 for alpha = 1, 3, 6 (and LJ when configured; both readings of Eq. 12b)."""
-    input:
-        descriptors=sphere_descriptors(SPHERE_FIG08),
-        alpha_cubed=sphere_descriptors(SPHERE_FIG08_CUBED),
-        code=script_sources("../scripts/sphere2019/figure.py"),
-    output:
-        **sphere_figure(7, second_reading=True, in_report=True),
-    params:
-        figure=7,
-    benchmark:
-        results_path("sphere2019/benchmarks/fig07.tsv")
-    log:
-        results_path("sphere2019/logs/fig07.log"),
-    script:
-        "../scripts/sphere2019/figure.py"
-
-
-rule sphere2019_fig08:
-    """Fig. 8: scaled number variance from g2 by Eq. (4) (both readings of Eq. 12b)."""
-    input:
-        descriptors=sphere_descriptors(SPHERE_FIG08),
-        alpha_cubed=sphere_descriptors(SPHERE_FIG08_CUBED),
-        code=script_sources("../scripts/sphere2019/figure.py"),
-    output:
-        **sphere_figure(8, second_reading=True, in_report=True),
-    params:
-        figure=8,
-    benchmark:
-        results_path("sphere2019/benchmarks/fig08.tsv")
-    log:
-        results_path("sphere2019/logs/fig08.log"),
-    script:
-        "../scripts/sphere2019/figure.py"
-
-
-SPHERE2019_FIGURES = [path for n in range(1, 9) for path in sphere_figure(n, n >= 5).values()]
+SPHERE2019_FIGURES = [path for n in SPHERE2019_FIGURE_INPUTS
+                      for path in figure_outputs("sphere2019", n, second_reading=n >= 5).values()]
 SPHERE2019_TARGETS = [
     results_path("sphere2019/comparison.csv"),
     results_path("sphere2019/comparison_notes.csv"),

@@ -4,7 +4,7 @@
 ``figNN(inputs, settings, log)`` takes ``inputs`` (name -> file: ``config_{system}``
 for a configuration, ``{kind}_{system}`` for a merged descriptor file), the config
 values the figure reads (``settings``) and a logger, and returns the matplotlib
-figure; the rule ``mrj2016_figure`` runs it through ``workflow/scripts/mrj2016/figure.py``
+figure; the rule ``mrj2016_figNN`` runs it through ``workflow/scripts/mrj2016/figure.py``
 (convention: :mod:`randmedia.plot.rule`). A system missing from ``inputs`` is left
 out of the figure (and logged). Not reproduced: the
 phi = 0.50 liquid of Ref. [39] (Fig. 3) and the MD packings of Ref. [29]

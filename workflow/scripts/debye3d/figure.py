@@ -1,4 +1,4 @@
-"""Rules debye3d_figure: the figure randmedia.plot.debye3d.FIGURES[params.figure], PDF and PNG."""
+"""Rules debye3d_figure_{name}: the figure randmedia.plot.debye3d.FIGURES[params.figure], PDF and PNG."""
 from randmedia.jobs import start_job
 
 log = start_job(snakemake)

@@ -1,4 +1,4 @@
-"""Rule mrj2016_figure (figNN, NN = 01 ... 13): the figure
+"""Rules mrj2016_fig01 ... mrj2016_fig13: the figure
 randmedia.plot.mrj2016.FIGURES[params.figure], saved as PDF and PNG."""
 from randmedia.jobs import start_job
 
