@@ -44,6 +44,24 @@ def test_a_kept_packing_is_certified_and_made_with_the_paper_config(path):
     assert np.isfinite(positions).all()
 
 
+UNCERTIFIED = sorted((REPO / "record" / "packings" / "mrj2016_uncertified").glob("*/sample*.nc"))
+
+
+@pytest.mark.skipif(not UNCERTIFIED, reason="no uncertified packings kept")
+@pytest.mark.parametrize("path", UNCERTIFIED, ids=[f"{p.parent.name}/{p.stem}" for p in UNCERTIFIED])
+def test_an_uncertified_kept_packing_is_overlap_free_and_says_it_is_not_jammed(path):
+    """The packings that failed the jamming test are kept beside the certified ones (counted,
+    not replaced): overlap-free, with the packing fraction and provenance they claim."""
+    ds = read_dataset(path, PARTICLE_CONFIG, attrs=("phi", "jammed", "gap_tolerance", "config_json",
+                                                      "seed", "git_commit"))
+    positions, box = ds["position"].values, ds["box"].values
+    diameter = float(ds.attrs["diameter"])
+    assert min_pair_distance(Cell(box), positions, 1.1 * diameter) >= diameter * (1 - 1e-9)
+    assert packing_fraction(positions, box, diameter) == pytest.approx(float(ds.attrs["phi"]), rel=1e-12)
+    assert int(ds.attrs["jammed"]) == 0
+    assert json.loads(ds.attrs["config_json"])["n_particles"] == positions.shape[0]
+
+
 QUICK_PACKING = REPO / "tests" / "data" / "mrj2016_quick_mrj_sample0.nc"
 
 

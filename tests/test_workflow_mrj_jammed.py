@@ -84,15 +84,20 @@ def test_packings_table_matches_the_files(jammed_run, section):
 
 def test_every_packing_is_kept_and_taken_back_instead_of_regenerated(jammed_run, section, tmp_path):
     """Each packing job keeps a copy beside the record (here the quick config's
-    {results}/record/packings/mrj2016/); a job on a machine without results/ takes it back
-    (same seed and configuration) instead of making the packing again."""
+    {results}/record/packings/mrj2016/ when certified, .../mrj2016_uncertified/ otherwise); a job
+    on a machine without results/ takes it back (same seed and configuration) instead of making
+    the packing again."""
     from conftest import copy_workflow
     from randmedia.kept_configurations import kept_path
 
     keep_dir = f"{QUICK_RESULTS}/record/packings/mrj2016"
     for system, k, path in packing_files(jammed_run, section):
-        kept = read_dataset(jammed_run / kept_path(keep_dir, system, k))
-        assert kept.identical(read_dataset(path))
+        made = read_dataset(path)
+        folder = keep_dir if int(made.attrs["jammed"]) else keep_dir + "_uncertified"
+        kept = read_dataset(jammed_run / kept_path(folder, system, k))
+        assert kept.identical(made)
+        other = keep_dir + "_uncertified" if folder == keep_dir else keep_dir
+        assert not (jammed_run / kept_path(other, system, k)).exists()
     fresh = copy_workflow(tmp_path / "fresh")
     target = kept_path(keep_dir, "mrj", 0)
     (fresh / target).parent.mkdir(parents=True)

@@ -3,6 +3,7 @@ from randmedia.jobs import start_job
 
 log = start_job(snakemake)
 
+import logging
 from pathlib import Path
 
 from randmedia.describe import bond_order, jamming
@@ -44,20 +45,24 @@ def make():
         "system": system, "sample": index, "Q6": q6, "crystal_fraction": crystal,
         "bond_order_cutoff": cutoff, "attempt": attempt})
     write_dataset(dataset, output, rule=snakemake.rule, seed=seed, config=config)
-    if kept is not None and analysis.jammed:
-        keep(output, kept)
-        log.info("kept a copy in %s", kept)
-    elif kept is not None:  # the record keeps certified packings only (tests/test_kept_packings.py)
-        log.warning("not kept: the packing did not pass the strict-jamming test at the %g D contact gap",
-                    params["contacts"]["gap_tolerance"])
+    if kept:
+        # certified packings beside the record, the others (counted, not replaced) beside them
+        path = kept[0] if analysis.jammed else kept[1]
+        keep(output, path)
+        log.log(logging.INFO if analysis.jammed else logging.WARNING, "kept a copy in %s%s", path,
+                "" if analysis.jammed else " (not strictly jammed at the %g D contact gap)"
+                % params["contacts"]["gap_tolerance"])
 
 
-# the copy kept beside the record (randmedia.kept_configurations): taken back when it was made
-# from the same seed and configuration, whichever attempt made it
-kept = kept_path(params["keep_dir"], system, index) if params["keep_dir"] else None
-if kept is not None and any(matching_kept(kept, seed, config) for seed in seeds):
-    keep(kept, output)
-    log.info("taken from the kept copy %s (same seed and configuration): not regenerated", kept)
+# the copies kept beside the record (randmedia.kept_configurations): certified packings under
+# keep_dir, the others under keep_dir + "_uncertified"; one is taken back when it was made from
+# the same seed and configuration, whichever attempt made it
+kept = [kept_path(folder, system, index) for folder in (params["keep_dir"], params["keep_dir"] + "_uncertified")] \
+    if params["keep_dir"] else []
+found = next((path for path in kept if any(matching_kept(path, seed, config) for seed in seeds)), None)
+if found is not None:
+    keep(found, output)
+    log.info("taken from the kept copy %s (same seed and configuration): not regenerated", found)
 else:
     make()
 
