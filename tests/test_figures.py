@@ -111,14 +111,36 @@ def test_empty_panels_finds_a_panel_with_reference_lines_only():
     assert empty_panels(fig) == [0]
 
 
+def test_labels_over_data_finds_a_legend_or_note_on_a_curve():
+    from randmedia.plot.style import figure, labels_over_data
+
+    fig, (top, bottom) = figure(nrows=2, ncols=1)
+    x = np.linspace(0, 1, 50)
+    top.plot(x, np.ones_like(x), label="flat at the top")     # runs under an upper-right legend
+    top.set_ylim(0, 1.05)
+    top.legend(loc="upper right")
+    bottom.plot(x, x, label="diagonal")
+    bottom.axhline(0.9, color="0.5")                            # a reference line: not data
+    bottom.legend(loc="upper left")                              # the diagonal is low on the left
+    bottom.text(0.5, 0.5, "note on the line")
+    found = labels_over_data(fig)
+    assert [(index, what) for index, what, _ in found] == [(0, "legend"), (1, "text 'note on the line'")]
+    assert all(points > 0 for _, _, points in found)
+    top.get_legend().remove()
+    top.legend(loc="lower center")                              # below the flat curve: free
+    bottom.texts[0].set_position((0.1, 0.8))
+    assert labels_over_data(fig) == []
+
+
 @pytest.mark.workflow
-def test_no_figure_of_the_quick_run_has_an_empty_panel(quick_run):
+def test_no_figure_of_the_quick_run_has_an_empty_panel_or_a_label_over_data(quick_run):
     """Every figure job logs the panels that show no data (randmedia.plot.rule); the quick
     run's figures have none (mrj2016 Fig. 6 draws the N = 2000 MRJ packings when the config
-    has no N = 10 000 ones)."""
+    has no N = 10 000 ones). The same logs name legends and notes drawn over data: none."""
     from conftest import QUICK_RESULTS
 
     logs = sorted((quick_run / QUICK_RESULTS).glob("*/logs/*fig*.log"))
     assert logs, "no figure logs found"
-    empty = [line for path in logs for line in path.read_text().splitlines() if "shows no data" in line]
+    empty = [line for path in logs for line in path.read_text().splitlines() 
+             if "shows no data" in line or "data points" in line]
     assert not empty, "\n".join(empty)

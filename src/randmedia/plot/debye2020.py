@@ -18,7 +18,7 @@ from randmedia.describe.surface import SURFACE
 from randmedia.describe.two_phase import TWO_POINT
 from randmedia.generate import PHASE_IMAGE
 from randmedia.io import read_dataset
-from randmedia.plot.style import band, figure
+from randmedia.plot.style import band, figure, legend_below
 from randmedia.theory.overlapping import s2_void
 
 
@@ -291,7 +291,7 @@ def fig03(inputs, settings, log):
         ax.set_title(rf"({label}) $\phi_2 = {phi2:g}$")
         ax.set_xlim(0, r.max() / a)
     axes[0].set_ylabel(r"$a\,F_{sv}(r)$")
-    axes[0].legend(loc="lower right", fontsize=7)
+    legend_below(axes[0], fontsize=7)  # wider than a panel of five
     return fig
 
 
@@ -331,7 +331,7 @@ def fig04(inputs, settings, log):
         ax.set_title(rf"({label}) $\phi_2 = {phi2:g}$")
         ax.set_xlim(0, r.max() / a)
     axes[0].set_ylabel(r"$a^2 F_{ss}(r)$")
-    axes[0].legend(loc="upper right", fontsize=7)
+    legend_below(axes[0], fontsize=7)  # wider than a panel of five
     return fig
 
 
@@ -379,8 +379,8 @@ def fig05(inputs, settings, log):
     left.set_xlim(0, 1.1 * max(reach) / a)
     left.set_xlabel(r"$\delta/a$")
     left.set_ylabel(r"$P(\delta)\,\phi_1/s$")
-    left.legend(loc="upper right", fontsize=7, title="simulation (band); Eq. (27):\n"
-                "our $p_1$ (dashed), paper's $p_1$ (dotted)", title_fontsize=6)
+    legend_below(left, ncol=3, fontsize=7, title="simulation (band); Eq. (27): "
+                 "our $p_1$ (dashed), paper's $p_1$ (dotted)", title_fontsize=6)  # the curves fill the panel
     left.set_title("(a)")
     phi2 = fits["phi2"].values
     right.errorbar(phi2, fits["mean_delta"].values / a, yerr=fits["mean_delta_sem"].values / a,
@@ -483,9 +483,8 @@ def _fig09_two_point(models: dict):
         ax.set_xlabel(r"$r s$")
         ax.set_xlim(0, 6)
         ax.set_title(f"({label})")
-    axes[2].legend(loc="upper right", fontsize=6,
-                   title="lines: exact / formula / simulation\npoints: level-set images",
-                   title_fontsize=6)
+    legend_below(axes[2], ncol=1, title="lines: exact / formula / simulation\npoints: level-set images",
+                 title_fontsize=6)
     return fig
 
 
@@ -525,7 +524,10 @@ def _fig10_to_12(models: dict, *, quantity: str):
     ax.set_ylim(1e-4, 2.0 if quantity == "lineal" else 3.0)
     ax.set_xlabel(labels[quantity][0])
     ax.set_ylabel(labels[quantity][1])
-    ax.legend(loc="lower left", fontsize=7, title="points: our image estimates", title_fontsize=6)
+    # off the curves: P(delta) falls steeply from the top left (upper right free), L(z) and p(z)
+    # fall as straight lines across the log axis (lower left free)
+    ax.legend(loc="upper right" if quantity == "pore" else "lower left", fontsize=7,
+              title="points: our image estimates", title_fontsize=6)
     return fig
 
 

@@ -18,7 +18,7 @@ import math
 import numpy as np
 
 from randmedia.io import read_dataset
-from randmedia.plot.style import COLUMN_WIDTH, band, figure
+from randmedia.plot.style import COLUMN_WIDTH, band, figure, legend_below
 
 COLOURS = {"overlapping": "0.25", "equilibrium": "C0", "mrj": "C3", "mrj_large": "C3",
            "fcc": "C2", "bcc": "C4"}
@@ -103,7 +103,8 @@ def _correlation_figure(inputs, settings, log, *, which):
             ax.set_ylim(0.0, 3.0 if which == "Fss" else 1.6)
         ax.text(0.97, 0.92, label, transform=ax.transAxes, ha="right", va="top")
         ax.set_ylabel(ylabel)
-        ax.legend(loc="lower right", fontsize=6)
+        # F*_ss/s^2 (Fig. 13) keeps its plateau at 1 in the upper half: legend upper left, inset low
+        ax.legend(loc="upper left" if which == "Fss2" else "lower right", fontsize=6)
     axes[-1].set_xlabel(r"$r/D$")
     axes[-1].set_xlim(0, 3.0)
     inset_at = {"Fss": 2.0, "Fss2": 1.0}.get(which)
@@ -115,7 +116,7 @@ def _correlation_figure(inputs, settings, log, *, which):
             near = (r > inset_at - 0.15) & (r < inset_at + 0.15)
             if near.sum() < 3:
                 continue
-            inset = ax.inset_axes([0.45, 0.45, 0.3, 0.4])
+            inset = ax.inset_axes([0.45, 0.08, 0.3, 0.4] if which == "Fss2" else [0.45, 0.45, 0.3, 0.4])
             band(inset, r[near], ds[f"{variable}_mean"].values[near], ds[f"{variable}_sem"].values[near],
                   COLOURS[system])
             inset.axvline(inset_at, color="0.5", ls=":", lw=0.6)
@@ -361,7 +362,7 @@ def fig07(inputs, settings, log):
     ax.set_xlim(0, 0.8)
     ax.set_xlabel(r"$\delta/D$")
     ax.set_ylabel(r"$F(\delta)$")
-    ax.legend(loc="lower left", fontsize=6)
+    legend_below(ax)  # the curves fill the lower left, the inset the upper right
     if mrj is not None and mrj.sizes["sample"] >= 4:
         eta = mrj["eta"].values
         mean = float(eta.mean())
@@ -373,7 +374,7 @@ def fig07(inputs, settings, log):
         if high.sum() < 2 or low.sum() < 2:
             log.info("MRJ packing fractions too uniform to split: no inset")
             return fig
-        inset = ax.inset_axes([0.58, 0.55, 0.38, 0.4])
+        inset = ax.inset_axes([0.66, 0.64, 0.3, 0.31])  # above the overlapping spheres' curve
         d = mrj["delta"].values
         for group, style, name in ((high, "-", ">"), (low, "--", "<")):
             F = mrj["F"].values[group].mean(axis=0)
@@ -435,7 +436,7 @@ def fig08(inputs, settings, log):
     ax.set_xlim(0, 1.6)
     ax.set_xlabel(r"$r/\lambda$")
     ax.set_ylabel(r"$E_V(r)$")
-    ax.legend(loc="lower left", fontsize=6)
+    legend_below(ax)
     return fig
 
 

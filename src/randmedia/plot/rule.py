@@ -19,7 +19,7 @@ the rule's input ``code``, derived from the script's imports, holds it) and call
 
 from __future__ import annotations
 
-from randmedia.plot.style import empty_panels, save_figure
+from randmedia.plot.style import empty_panels, labels_over_data, save_figure
 
 
 def draw_rule_figure(figures: dict, snakemake, log) -> None:
@@ -57,4 +57,7 @@ def draw_rule_figure(figures: dict, snakemake, log) -> None:
         log.info("%s.%s -> %s", draw.__module__, draw.__name__, pdfs[name])
         for index in empty_panels(fig):  # read by tests/test_figures.py on the quick run's logs
             log.warning("%s: panel %d of %d shows no data", pdfs[name], index + 1, len(fig.axes))
+        for index, what, points in labels_over_data(fig):  # read by the same test
+            log.warning("%s: panel %d of %d: %s lies over %d data points", pdfs[name], index + 1,
+                        len(fig.axes), what, points)
         save_figure(fig, pdfs[name])

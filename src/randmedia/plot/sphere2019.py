@@ -21,7 +21,7 @@ import xarray as xr
 from randmedia.describe.sphere_points import CAP_VARIANCE
 from randmedia.generate.sphere_surface import SPHERE_CONFIG, frames_of
 from randmedia.io import read_dataset
-from randmedia.plot.style import PAGE_WIDTH, band, figure
+from randmedia.plot.style import PAGE_WIDTH, band, figure, legend_below
 from randmedia.theory.sphere_caps import poisson_variance, uniform_variance
 
 VIEW = (np.deg2rad(20.0), np.deg2rad(30.0))  # elevation, azimuth of the viewer
@@ -160,7 +160,7 @@ def fig01(inputs, settings, log):
     ax.plot(a * np.cos(e), h_base + 0.18 * a * np.sin(e), "k-", lw=0.8, zorder=3)
     ax.plot(np.cos(t), np.sin(t), "k-", lw=1.0)
     ax.plot([0, a], [h_base, h_base], "k--", lw=0.8, zorder=4)
-    ax.text(a / 2, h_base + 0.03, r"$a$", ha="center", va="bottom", zorder=5)
+    ax.text(a / 2, h_base + 0.012, r"$a$", ha="center", va="bottom", fontsize=7, zorder=5)  # under the rim
     ax.plot([0, 0], [0, radius], "k:", lw=0.8)
     ax.plot([0, a], [0, h_base], "k:", lw=0.8)
     ax.add_patch(Arc((0, 0), 0.5, 0.5, theta1=90 - np.rad2deg(phi), theta2=90, lw=0.8))
@@ -333,7 +333,7 @@ def fig04(inputs, settings, log):
     """
     descriptors, a_min = _fluids(inputs["descriptors"]), settings["a_min"]
     fig, ax = figure(aspect=0.8)
-    inset = ax.inset_axes([0.55, 0.52, 0.42, 0.42])
+    inset = ax.inset_axes([0.14, 0.1, 0.4, 0.36])  # lower left: the curves fall from the upper left
     for k, (system, ds) in enumerate(descriptors.items()):
         a, scaled, sem, rho = _scaled(ds)
         keep = a >= a_min
@@ -355,7 +355,7 @@ def fig04(inputs, settings, log):
     ax.set_xlabel(r"$a\rho^{1/2}$")
     ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
     ax.set_ylim(bottom=0)
-    ax.legend(loc="lower left", fontsize=6)
+    legend_below(ax)  # the inset holds the lower left
     return fig
 
 
@@ -395,7 +395,7 @@ def _fig05_alpha(descriptors: dict[str, xr.Dataset], *, a_min: float = 1.0):
     ax.set_xlabel(r"$a\rho^{1/2}$")
     ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
     ax.set_ylim(bottom=0)
-    ax.legend(loc="lower left", fontsize=7)
+    legend_below(ax, fontsize=7)  # the curves of the three alpha span the panel
     return fig
 
 

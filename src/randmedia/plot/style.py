@@ -119,6 +119,105 @@ def empty_panels(fig) -> list[int]:
     return empty
 
 
+def _data_points_on_screen(ax, pixel: float = 1.0) -> np.ndarray:
+    """Display coordinates (n, 2) of what ``ax`` draws as data, inside the axes window: the
+    vertices of every line of more than two points with its segments sampled every ``pixel``
+    (reference lines of ``axhline``/``axvline`` have two points and are left out), the offsets
+    of scatter markers and the segments of error bars. Bands (``fill_between``) are left out:
+    their curve is a line."""
+    from matplotlib.collections import LineCollection, PathCollection
+
+    pieces = []
+    for line in ax.get_lines():
+        xy = np.asarray(line.get_xydata(), dtype=float)
+        finite = np.isfinite(xy).all(axis=1)
+        if not line.get_visible() or finite.sum() <= 2:
+            continue
+        screen = line.get_transform().transform(xy[finite])
+        pieces.append(screen)
+        if line.get_linestyle() not in ("None", "none", "", " "):
+            pieces.append(_sampled_segments(screen, pixel))
+    for collection in ax.collections:
+        if not collection.get_visible():
+            continue
+        if isinstance(collection, PathCollection) and len(collection.get_offsets()):
+            pieces.append(collection.get_offset_transform().transform(np.asarray(collection.get_offsets(), dtype=float)))
+        elif isinstance(collection, LineCollection):
+            for path in collection.get_paths():
+                pieces.append(_sampled_segments(collection.get_transform().transform(path.vertices), pixel))
+    if not pieces:
+        return np.empty((0, 2))
+    points = np.concatenate(pieces)
+    points = points[np.isfinite(points).all(axis=1)]
+    window = ax.get_window_extent()
+    inside = ((points[:, 0] >= window.x0) & (points[:, 0] <= window.x1)
+              & (points[:, 1] >= window.y0) & (points[:, 1] <= window.y1))
+    return points[inside]
+
+
+def _sampled_segments(screen: np.ndarray, pixel: float) -> np.ndarray:
+    """Points every ``pixel`` along the polyline ``screen`` (display coordinates)."""
+    if len(screen) < 2:
+        return screen
+    start, end = screen[:-1], screen[1:]
+    steps = np.clip(np.ceil(np.hypot(*(end - start).T) / pixel).astype(int), 1, 10_000)
+    fractions = np.concatenate([np.arange(m) / m for m in steps])
+    index = np.repeat(np.arange(len(start)), steps)
+    return start[index] + fractions[:, None] * (end - start)[index]
+
+
+def labels_over_data(fig, margin: float = 1.0) -> list[tuple[int, str, int]]:
+    """Legends and text notes of ``fig`` that lie on its data.
+
+    For each visible panel (``fig.axes`` order) the legend's box (title included), the box
+    of every non-empty text drawn in data or axes coordinates (``ax.text``, ``ax.annotate``)
+    and the box of every inset (``ax.inset_axes``, tick labels included), shrunk by ``margin``
+    pixels, are tested against the panel's data as drawn
+    (:func:`_data_points_on_screen`: curves sampled every pixel, markers, error bars).
+
+    Returns
+    -------
+    list of (panel index, what, points)
+        ``what`` is ``"legend"``, ``"text '...'"`` or ``"inset"``; ``points`` how many data points lie
+        inside its box. Empty when no legend or note covers data.
+    """
+    fig.canvas.draw()
+    renderer = fig.canvas.get_renderer()
+    found = []
+    for index, ax in enumerate(fig.axes):
+        if not ax.get_visible():
+            continue
+        boxes = []
+        legend = ax.get_legend()
+        if legend is not None and legend.get_visible():
+            boxes.append(("legend", legend.get_window_extent(renderer)))
+        for text in ax.texts:
+            if text.get_visible() and text.get_text().strip():
+                boxes.append((f"text {text.get_text().strip()!r}", text.get_window_extent(renderer)))
+        for child in ax.child_axes:  # insets, their tick labels included
+            if child.get_visible():
+                boxes.append(("inset", child.get_tightbbox(renderer)))
+        if not boxes:
+            continue
+        points = _data_points_on_screen(ax)
+        for what, box in boxes:
+            inside = ((points[:, 0] > box.x0 + margin) & (points[:, 0] < box.x1 - margin)
+                      & (points[:, 1] > box.y0 + margin) & (points[:, 1] < box.y1 - margin))
+            if inside.any():
+                found.append((index, what, int(inside.sum())))
+    return found
+
+
+def legend_below(ax, *, ncol: int = 2, fontsize: float = 6, **kwargs):
+    """The legend of ``ax`` in ``ncol`` columns under its x label, off the data: for panels
+    whose curves leave no corner free. Extra keyword arguments go to ``ax.legend``."""
+    from matplotlib.transforms import offset_copy
+
+    below = offset_copy(ax.transAxes, fig=ax.figure, y=-30, units="points")  # tick labels + x label
+    return ax.legend(loc="upper center", bbox_to_anchor=(0.5, 0.0), bbox_transform=below, ncol=ncol,
+                     fontsize=fontsize, **kwargs)
+
+
 def save_figure(fig, pdf_path: str | os.PathLike) -> tuple[Path, Path]:
     """Save ``fig`` as ``X.pdf`` and ``X.png`` (atomically) and close it."""
     pdf_path = Path(pdf_path)
