@@ -68,6 +68,8 @@ def test_comparison_page_lists_failures_first_with_reasons():
     failures = page.split("<h2>Rows that do not pass</h2>")[1].split("<h2>Every row</h2>")[0]
     assert "our packings are smaller" in failures and "not computed" in failures
     assert "x&lt;y" in failures and "x<y" not in page  # escaped
+    header = failures.split("</tr>")[0]
+    assert header.index(">ours<") < header.index(">reason<")  # numbers first, the wide reason last
     assert page.count("<tr class=failed>") == 2  # highlighted among every row
     plain = report.table_page(comparison.drop(columns="passed"), "p: table", "t.csv")
     assert "3 rows." in plain and "class=failed" not in plain

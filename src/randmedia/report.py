@@ -158,11 +158,12 @@ def comparison_page(comparison: pd.DataFrame, title: str, source,
     if notes is not None and {"quantity", "key"} <= set(notes.columns):
         extra = notes.drop_duplicates(["quantity", "key"])
         joined = comparison.merge(extra, on=["quantity", "key"], how="left", suffixes=("", "_note"))
-    if failed.any():  # the reason right after the row's name, then the numbers
+    if failed.any():  # the numbers right after the row's name, the (wide) reason last: a
+        # 1400 px window then shows published and ours without scrolling sideways
         failures = joined[failed.to_numpy()]
-        columns = ["quantity", "key"] + (["reason"] if "reason" in failures.columns else [])
-        columns += ["published", "ours", "ours_sem", "tolerance"]
+        columns = ["quantity", "key", "published", "ours", "ours_sem", "tolerance"]
         columns += ["deviation_in_tolerances"] if "deviation_in_tolerances" in failures.columns else []
+        columns += ["reason"] if "reason" in failures.columns else []
         parts += ["<h2>Rows that do not pass</h2>", html_table(failures[columns])]
     parts += ["<h2>Every row</h2>", html_table(joined)]
     return _page(title, "\n".join(parts))

@@ -80,7 +80,7 @@ def _correlation_figure(inputs, settings, log, *, which):
             r = ds["r"].values
             keep = r > 0 if which in ("Fss", "Fsv2", "Fss2") else slice(None)
             band(ax, r[keep], ds[f"{variable}_mean"].values[keep], ds[f"{variable}_sem"].values[keep],
-                  colour, label=f"{LABELS[system]} ({ds.sizes['sample']} samples)")
+                  colour, label=f"{LABELS[system]} ({_count(ds.sizes['sample'], 'sample')})")
             phi, label = float(np.mean(ds["phi"].values)), _phi_label(ds)
             s = 6.0 * phi
             if which == "Fsv2":  # slope at r = 0 from the contact number (Eq. B3)
@@ -227,6 +227,11 @@ def fig13(inputs, settings, log):
 # --------------------------------------------------------------------------- Fig. 6
 
 
+def _count(n: int, noun: str) -> str:
+    """``"1 sample"``, ``"4 samples"``."""
+    return f"{n} {noun}" + ("" if n == 1 else "s")
+
+
 def fig06(inputs, settings, log):
     """Fig. 6: spectral densities -- overlapping (bottom), liquid (centre), MRJ (top).
 
@@ -271,7 +276,7 @@ def fig06(inputs, settings, log):
             ax.errorbar(kk, spec["chi_mean"].values[good], yerr=spec["chi_sem"].values[good], fmt="x",
                         ms=2.5, color="k", lw=0.6, label=r"$|\tilde J(\mathbf{k})|^2/V$ (Eq. 14)")
             title = (rf"{LABELS[system]}" "\n" rf"$\phi = {float(np.mean(spec['eta'].values)):.3f}$, "
-                     rf"$N = {float(np.mean(spec['n'].values)):.0f}$, {spec.sizes['sample']} samples")
+                     rf"$N = {float(np.mean(spec['n'].values)):.0f}$, " + _count(spec.sizes["sample"], "sample"))
             if system == "equilibrium":
                 s0 = _liquid_s0(float(np.mean(spec["eta"].values)), log)
                 if s0 is not None:
