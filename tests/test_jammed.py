@@ -223,6 +223,53 @@ def test_lattices_jammed_or_not():
     assert not sc.jammed and sc.max_motion > 0.1 and sc.rank_ratio < 1e-12
 
 
+def test_the_cone_motion_keeps_contacts_and_lowers_the_volume():
+    """fcc stretched by 2 % along x keeps only its contacts in the yz planes: the test's motion
+    (analysis.motion) compresses x, with Tr epsilon = the cone LP's optimum < 0, keeping or
+    opening every contact to first order (the rows of constraint_matrix); leaving the vertex
+    along it closes the stretched gaps and raises phi."""
+    positions, box = bond_order.cubic_lattice("fcc", 2)
+    stretch = np.diag([1.02, 1.0, 1.0])
+    positions, box = positions @ stretch.T, stretch @ box
+    loose = jamming.analyse(positions, box)
+    strain, displacement = loose.motion
+    assert not loose.jammed and loose.min_trace < -0.5
+    assert np.trace(strain) == pytest.approx(loose.min_trace, abs=1e-9) and strain[0, 0] < 0
+    net = loose.network
+    normal = net.separation / np.linalg.norm(net.separation, axis=1)[:, None]
+    rate = (np.einsum("ma,ma->m", normal, displacement[net.j] - displacement[net.i])
+            + np.einsum("ma,ab,mb->m", normal, strain, normal) * np.linalg.norm(net.separation, axis=1))
+    assert rate.min() > -1e-9
+    moved, new_box, step = jammed.leave_vertex(positions, box, strain, displacement, reach=0.1)
+    assert 0 < step and min_gap(moved, new_box) >= 0.0 and min_gap(moved, new_box) < 1e-12
+    assert jammed.packing_fraction(moved, new_box) > jammed.packing_fraction(positions, box)
+    fcc = jamming.analyse(*bond_order.cubic_lattice("fcc", 2))
+    assert abs(np.trace(fcc.motion[0])) < 1e-9  # jammed: the cone holds nothing that lowers V
+
+
+def test_leave_vertex_stops_at_the_first_new_contact():
+    """Two spheres 0.1 D apart, the second moving towards the first at unit rate: the step is
+    the gap, after which they touch; a motion that closes nothing moves reach / rate."""
+    positions = np.array([[1.0, 1.0, 1.0], [2.1, 1.0, 1.0], [1.0, 3.0, 1.0]])
+    box = 6.0 * np.eye(3)
+    displacement = np.zeros((3, 3))
+    displacement[1, 0] = -1.0
+    moved, new_box, step = jammed.leave_vertex(positions, box, np.zeros((3, 3)), displacement, reach=0.2)
+    assert step == pytest.approx(0.1, rel=1e-12)
+    assert min_gap(moved, new_box) == pytest.approx(0.0, abs=1e-12) and min_gap(moved, new_box) >= 0.0
+    assert np.linalg.det(new_box) == pytest.approx(216.0, rel=1e-12)
+    _, _, apart = jammed.leave_vertex(positions, box, np.zeros((3, 3)), -displacement, reach=0.2)
+    assert apart == pytest.approx(0.2)
+
+
+def test_certified_packing_is_left_as_it_is(packing3d):
+    from randmedia.studies.jammed_certificate import certified
+
+    packing, analysis, repair = certified(packing3d, jammed.TJParameters(), {"gap_tolerance": 1e-9})
+    assert analysis.jammed and repair.rounds == 0 and repair.lps == 0 and packing is packing3d
+    assert repair.attrs()["repair_rounds"] == 0
+
+
 def test_rattlers_are_found():
     """A sphere of fcc moved off its lattice site keeps < d + 1 contacts: a rattler, and
     the only one (its neighbours keep their other contacts)."""

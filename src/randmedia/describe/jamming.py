@@ -226,6 +226,10 @@ class JammingAnalysis:
     max_motion: float                # largest |x| of a random-load LP (0 if jammed or not run)
     min_trace: float                 # min Tr epsilon over the cone (0 when jammed)
     rank_ratio: float                # lambda_min / lambda_max of B^T B (> 0: no floppy mode)
+    #: the cone LP's optimal motion (strain d x d, displacements n x d; rattlers 0): where
+    #: min Tr epsilon < 0, a first-order motion that keeps every backbone contact closed or
+    #: opening and lowers the volume (:func:`randmedia.generate.jammed.leave_vertex`)
+    motion: tuple[np.ndarray, np.ndarray] | None = None
 
     @property
     def n_backbone(self) -> int:
@@ -372,8 +376,13 @@ def analyse(positions, box, diameter: float = 1.0, *, gap_tolerance: float = 1e-
                 max_motion = max(max_motion, float(np.abs(solution.x).max()))
     jammed = (trace.objective > -motion_tolerance and positive and rank_ratio > rank_tolerance
               and max_motion < motion_tolerance)
+    full = np.zeros(matrix.shape[1])
+    full[np.flatnonzero(gauge)] = trace.x
+    displacement = np.zeros((n, dim))
+    displacement[backbone] = full[ns:].reshape(-1, dim)
+    motion = (packing_lp.strain_matrix(full[:ns], dim), displacement)
     return JammingAnalysis(network, rattler, on_backbone, forces, bool(jammed), max_motion,
-                           float(trace.objective), rank_ratio)
+                           float(trace.objective), rank_ratio, motion)
 
 
 # --------------------------------------------------------------------------- summaries

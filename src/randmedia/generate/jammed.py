@@ -338,6 +338,67 @@ def remove_overlaps(positions: np.ndarray, box: np.ndarray, diameter: float):
         factor = np.nextafter(factor, np.inf)
 
 
+def leave_vertex(positions: np.ndarray, box: np.ndarray, strain: np.ndarray, displacement: np.ndarray,
+                 diameter: float = 1.0, *, contact_gap: float = 1e-9, reach: float = 0.02):
+    """Move a packing along a first-order motion until its first new contact.
+
+    A polish can stop at a degenerate vertex: an isostatic contact network with a contact that
+    bears no load is one contact short of rigid, and the motion that opens that contact and
+    lowers the volume (the jamming test's cone LP, :mod:`randmedia.describe.jamming`) is
+    blocked, within the TJ LP, by a near pair only 10^-9 - 10^-8 D away, so each LP gains less
+    than the polish's tolerance. This takes that motion x = (``strain`` epsilon,
+    ``displacement`` u) exactly as far as the first pair it closes allows: with
+    rate_k = n_k . (u_j - u_i) + rho_k n_k^T epsilon n_k the first-order change of the gap
+    g_k of pair k (the row of :func:`randmedia.generate.packing_lp.constraint_matrix`), the
+    step is s = min g_k / (-rate_k) over the pairs within D (1 + ``reach``) that close
+    (rate_k < 0) and are not contacts (g_k > ``contact_gap`` D); then
+    x_i <- (I + s epsilon)(x_i + s u_i), box <- (I + s epsilon) box, and the overlaps left
+    (second order in s, and contacts not in the motion's rows) are removed by rescaling as
+    in a TJ step. A polish from there closes the new contact network.
+
+    Parameters
+    ----------
+    positions : ndarray, shape (n, d)
+        Non-overlapping centres.
+    box : ndarray, shape (d, d)
+        Periodic cell, columns the lattice vectors.
+    strain, displacement : ndarray, shapes (d, d) and (n, d)
+        The first-order motion (in the LP's normalization, |x| <= 1).
+    diameter : float, optional
+        D.
+    contact_gap : float, optional
+        Gaps up to this fraction of D are contacts (they do not limit the step).
+    reach : float, optional
+        Pairs closer than D (1 + reach) are checked; s is capped at ``reach`` D over the
+        largest closing rate when none of them closes.
+
+    Returns
+    -------
+    positions, box : ndarray
+        The moved, overlap-free packing (cell LLL-reduced, centres wrapped).
+    step : float
+        s.
+    """
+    positions = np.asarray(positions, dtype=float)
+    dim = positions.shape[1]
+    i, j, separation, distance = pairs_within(Cell(box), positions, diameter * (1.0 + reach))
+    normal = separation / distance[:, None]
+    rate = (np.einsum("ma,ma->m", normal, displacement[j] - displacement[i])
+            + distance * np.einsum("ma,ab,mb->m", normal, strain, normal))
+    gap = distance - diameter
+    closing = (rate < 0.0) & (gap > contact_gap * diameter)
+    if closing.any():
+        step = float(np.min(gap[closing] / -rate[closing]))
+    else:
+        step = reach * diameter / max(float(np.abs(rate).max(initial=0.0)), 1.0)
+    deformation = np.eye(dim) + step * strain
+    moved = (positions + step * displacement) @ deformation.T
+    new_box = deformation @ box
+    moved, new_box, _ = remove_overlaps(moved, new_box, diameter)
+    new_box = reduce_cell(new_box)
+    return Cell(new_box).wrap(moved), new_box, step
+
+
 def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diameter: float = 1.0,
             threads: int = 1, trust: float = 1.0, start_volume: float | None = None):
     """One LP of the TJ construction (steps 1-4 of the module docstring), with the

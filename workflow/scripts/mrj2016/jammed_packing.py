@@ -6,12 +6,13 @@ log = start_job(snakemake)
 import logging
 from pathlib import Path
 
-from randmedia.describe import bond_order, jamming
+from randmedia.describe import bond_order
 from randmedia.generate.jammed import packing_dataset
 from randmedia.generate.mrj import MAX_ATTEMPTS, MRJProtocol, make_packing_retrying
 from randmedia.io import write_dataset
 from randmedia.kept_configurations import keep, kept_path, matching_kept
 from randmedia.seeding import sample_seed
+from randmedia.studies.jammed_certificate import certified
 
 params = dict(snakemake.params.items())
 system = snakemake.wildcards.system
@@ -31,7 +32,8 @@ def make():
                                              checkpoint_seconds=params["checkpoint_seconds"], log=log)  # one HiGHS
     # thread: the LP solutions, hence the packings, are then the same whatever the core count
     seed = seeds[attempt]
-    analysis = jamming.analyse(packing.positions, packing.box, packing.diameter, **params["contacts"])
+    # the test, and the repair of a polish stopped at a degenerate vertex (unloaded contacts)
+    packing, analysis, repair = certified(packing, protocol.polish, params["contacts"], log=log)
     cutoff = params["bond_order_cutoff"] * packing.diameter
     q6 = bond_order.global_q6(packing.positions, packing.box, cutoff, diameter=packing.diameter)
     crystal = bond_order.crystalline_fraction(packing.positions, packing.box, cutoff,
@@ -43,7 +45,7 @@ def make():
              analysis.jammed, q6, crystal)
     dataset = packing_dataset(packing, analysis, {
         "system": system, "sample": index, "Q6": q6, "crystal_fraction": crystal,
-        "bond_order_cutoff": cutoff, "attempt": attempt})
+        "bond_order_cutoff": cutoff, "attempt": attempt, **repair.attrs()})
     write_dataset(dataset, output, rule=snakemake.rule, seed=seed, config=config)
     if kept:
         # certified packings beside the record, the others (counted, not replaced) beside them
