@@ -254,3 +254,33 @@ def test_the_dilute_route_makes_a_strictly_jammed_packing_and_resumes_after_its_
     assert spy.call_count == 1  # the polish only
     assert np.array_equal(resumed.positions, packing.positions) and np.array_equal(resumed.box, packing.box)
     assert not checkpoint.exists()
+
+
+def test_a_dilute_stage_killed_and_resumed_counts_the_cpu_of_both_processes(tmp_path, monkeypatch):
+    """The packing's cpu_seconds after a kill inside the dilute stage include the killed
+    process's LPs (the stage's own checkpoint keeps its clocks), not only the resumed one's."""
+    import time
+
+    from randmedia.generate import jammed
+
+    protocol = mrj.MRJProtocol(route="dilute")
+    checkpoint = tmp_path / "dilute.npz"
+    real_step, calls = jammed.tj_step, {"n": 0}
+
+    def dying_step(*args, **kwargs):
+        calls["n"] += 1
+        if calls["n"] > 60:
+            raise KeyboardInterrupt("killed")
+        return real_step(*args, **kwargs)
+
+    monkeypatch.setattr(jammed, "tj_step", dying_step)
+    killed = time.process_time()
+    with pytest.raises(KeyboardInterrupt):
+        mrj.make_packing(2, 100, protocol, checkpoint=checkpoint, checkpoint_seconds=0.0)
+    killed = time.process_time() - killed
+    monkeypatch.setattr(jammed, "tj_step", real_step)
+    resumed_cpu = time.process_time()
+    resumed = mrj.make_packing(2, 100, protocol, checkpoint=checkpoint, checkpoint_seconds=0.0)
+    resumed_cpu = time.process_time() - resumed_cpu
+    assert killed > 0.2
+    assert resumed.cpu_seconds > resumed_cpu + 0.5 * killed

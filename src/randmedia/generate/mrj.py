@@ -36,6 +36,7 @@ from __future__ import annotations
 
 import logging
 import os
+import time
 from collections.abc import Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
@@ -310,9 +311,13 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
                                                       protocol.dilute.initial_phi, dim)
         stage_checkpoint = None if checkpoint is None else \
             Path(checkpoint).with_name(Path(checkpoint).stem + ".dilute.npz")
+        wall, cpu = time.perf_counter(), time.process_time()
         stage = jam(start, start_box, protocol.dilute.tj_parameters(n, dim), checkpoint=stage_checkpoint,
                     checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds,
                     threads=threads)
+        # a stage resumed from its own checkpoint ran partly in earlier processes: count that too
+        run.seconds_before += max(stage.seconds - (time.perf_counter() - wall), 0.0)
+        run.cpu_seconds_before += max(stage.cpu_seconds - (time.process_time() - cpu), 0.0)
         positions, box, history = stage.positions, stage.box, stage.history
         log.info("dilute TJ stage: phi = %.6f after %d LPs (%.1f s CPU)", stage.phi, stage.n_lp,
                  stage.cpu_seconds)
