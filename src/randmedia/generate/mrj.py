@@ -279,7 +279,7 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
     seconds, cpu_seconds = run.seconds, run.cpu_seconds
     run.finish()
     n_inflation = len(history["phi"])
-    log.info("strictly jammed after %d inflation and %d TJ LPs in %.1f s (%.1f s CPU): "
+    log.info("polished (the jamming test follows) after %d inflation and %d TJ LPs in %.1f s (%.1f s CPU): "
              "phi = %.6f", n_inflation, packing.n_lp, seconds, cpu_seconds, packing.phi)
     return MRJPacking(positions=packing.positions, box=packing.box, diameter=1.0,
                       n_lp=n_inflation + packing.n_lp, seconds=seconds, cpu_seconds=cpu_seconds,
@@ -329,7 +329,7 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
     seconds, cpu_seconds = run.seconds, run.cpu_seconds
     run.finish()
     n_dilute = len(history["phi"])
-    log.info("strictly jammed after %d dilute TJ and %d polish LPs in %.1f s (%.1f s CPU): phi = %.6f",
+    log.info("polished (the jamming test follows) after %d dilute TJ and %d polish LPs in %.1f s (%.1f s CPU): phi = %.6f",
              n_dilute, packing.n_lp, seconds, cpu_seconds, packing.phi)
     return MRJPacking(positions=packing.positions, box=packing.box, diameter=1.0,
                       n_lp=n_dilute + packing.n_lp, seconds=seconds, cpu_seconds=cpu_seconds,
