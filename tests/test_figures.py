@@ -141,6 +141,6 @@ def test_no_figure_of_the_quick_run_has_an_empty_panel_or_a_label_over_data(quic
 
     logs = sorted((quick_run / QUICK_RESULTS).glob("*/logs/*fig*.log"))
     assert logs, "no figure logs found"
-    empty = [line for path in logs for line in path.read_text().splitlines() 
+    empty = [line for path in logs for line in path.read_text().splitlines()
              if "shows no data" in line or "data points" in line]
     assert not empty, "\n".join(empty)
