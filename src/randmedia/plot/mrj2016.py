@@ -36,6 +36,11 @@ def _load(inputs, name, log=None):
     return read_dataset(path)
 
 
+def _count(n: int, noun: str) -> str:
+    """``"1 sample"``, ``"4 samples"``."""
+    return f"{n} {noun}" + ("" if n == 1 else "s")
+
+
 def _phi_label(ds):
     return rf"$\phi = {float(np.mean(ds['eta'].values)):.3f}$"
 
@@ -225,11 +230,6 @@ def fig13(inputs, settings, log):
 
 
 # --------------------------------------------------------------------------- Fig. 6
-
-
-def _count(n: int, noun: str) -> str:
-    """``"1 sample"``, ``"4 samples"``."""
-    return f"{n} {noun}" + ("" if n == 1 else "s")
 
 
 def fig06(inputs, settings, log):

@@ -101,6 +101,12 @@ def band(ax, x, mean, sem, colour=None, label=None, *, alpha: float = 0.3, **lin
     return line
 
 
+def _finite_points(line) -> np.ndarray:
+    """Which points of a line are finite; a line with more than two is data (``axhline`` and
+    ``axvline`` draw reference lines of two)."""
+    return np.isfinite(np.asarray(line.get_xydata(), dtype=float)).all(axis=1)
+
+
 def empty_panels(fig) -> list[int]:
     """Indices (in ``fig.axes`` order) of the visible panels that show no data: no line of more
     than two points (reference lines drawn with ``axhline``/``axvline`` have two), no
@@ -110,8 +116,7 @@ def empty_panels(fig) -> list[int]:
     for index, ax in enumerate(fig.axes):
         if not ax.get_visible():
             continue
-        lines = any(np.isfinite(np.asarray(line.get_xydata(), dtype=float)).all(axis=1).sum() > 2
-                    for line in ax.get_lines())
+        lines = any(_finite_points(line).sum() > 2 for line in ax.get_lines())
         collections = any(len(c.get_paths()) > 0 or len(getattr(c, "get_offsets", lambda: [])()) > 0
                           for c in ax.collections)
         if not (lines or collections or ax.images or ax.patches):
@@ -129,11 +134,10 @@ def _data_points_on_screen(ax, pixel: float = 1.0) -> np.ndarray:
 
     pieces = []
     for line in ax.get_lines():
-        xy = np.asarray(line.get_xydata(), dtype=float)
-        finite = np.isfinite(xy).all(axis=1)
+        finite = _finite_points(line)
         if not line.get_visible() or finite.sum() <= 2:
             continue
-        screen = line.get_transform().transform(xy[finite])
+        screen = line.get_transform().transform(np.asarray(line.get_xydata(), dtype=float)[finite])
         pieces.append(screen)
         if line.get_linestyle() not in ("None", "none", "", " "):
             pieces.append(_sampled_segments(screen, pixel))

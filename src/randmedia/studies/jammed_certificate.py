@@ -42,7 +42,7 @@ class Repair:
         """The packing file's attributes of the repair."""
         return {"repair_rounds": self.rounds, "repair_lps": self.lps,
                 "repair_cpu_seconds": self.cpu_seconds,
-                "repair_steps": np.asarray(self.steps, dtype=float) if self.steps else np.zeros(0)}
+                "repair_steps": np.asarray(self.steps, dtype=float)}
 
 
 def certified(packing: JammedPacking, polish: TJParameters, contacts: dict, *,
