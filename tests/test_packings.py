@@ -176,12 +176,17 @@ def test_contact_number_weights_gapped_pairs():
     assert c["z_B4"] == pytest.approx(2 * expected_pairs / 4, rel=1e-3)
 
 
-def test_blocks_of_radii_give_the_same_functions(rsa_triclinic, monkeypatch):
-    """Processing the radii in blocks (bounded memory for N = 10 000) changes nothing."""
-    r = np.linspace(0, packings.max_radius(TRICLINIC) - 1e-6, 120)
-    whole = packings.correlation_functions(rsa_triclinic, TRICLINIC, r)
-    monkeypatch.setattr(packings, "MAX_PAIRS_PER_BLOCK", 300)
-    assert len(packings._radius_blocks(r, packings.pair_distances(rsa_triclinic, TRICLINIC, 2.5), 1.0)) > 5
-    blocked = packings.correlation_functions(rsa_triclinic, TRICLINIC, r)
-    for name in packings.CORRELATION_VARIABLES:
-        np.testing.assert_allclose(blocked[name], whole[name], rtol=1e-10, atol=1e-12)
+def test_prefix_sums_at_window_ends_do_not_depend_on_which_radii_share_a_pass(rsa_triclinic):
+    """The prefix sums are evaluated only at the window ends of the asked radii, and kept for
+    later calls: radii asked one at a time, in another order, or after other radii give the
+    same sums as all radii in one call."""
+    rho = packings.pair_distances(rsa_triclinic, TRICLINIC, Cell(TRICLINIC).half_width)
+    r = np.linspace(0.01, packings.max_radius(TRICLINIC) - 1e-6, 60)
+    together = packings.PairSums(rho, R)
+    reused = packings.PairSums(rho, R)
+    reused("v", r[::7])  # fills the kept prefix sums with other window ends first
+    for kernel in ("v", "h", "J"):
+        whole = np.asarray(together(kernel, r), dtype=float)
+        single = np.array([float(packings.PairSums(rho, R)(kernel, [ri])[0]) for ri in r[::-1]])[::-1]
+        np.testing.assert_array_equal(single, whole)
+        np.testing.assert_array_equal(np.asarray(reused(kernel, r), dtype=float), whole)

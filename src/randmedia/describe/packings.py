@@ -42,10 +42,10 @@ binary searches (O(P log P + n_r log P) for P pairs instead of O(P n_r)). The
 prefix sums are compensated (Neumaier; double-double) and the per-radius
 combination runs in numpy.longdouble, because the polynomial in rho (not in
 rho - r) cancels by up to ((r + D)/D)^5; the result agrees with the direct
-per-pair sum to ~1e-10 relative (tested). Radii are processed in blocks whose
-pair slices hold at most MAX_PAIRS_PER_BLOCK distances (memory of the prefix
-sums: 12 doubles per pair), so N = 10 000 packings out to r ~ 10 D fit in
-~0.5 GB.
+per-pair sum to ~1e-10 relative (tested). The prefix sums are kept only at the
+window ends of the asked radii (one pass over the sorted distances: 12 doubles
+per radius instead of per pair), so an N = 10 000 liquid out to r ~ 10 D (25
+million pairs) needs little more than its distances (0.2 GB).
 
 Validity. The pair sums need every pair closer than r + D exactly once, so
 r < h_w - D (Eq. A8; h_w = half the smallest face distance of the cell, any
@@ -178,16 +178,23 @@ def one_body_terms(r, radius: float) -> dict[str, np.ndarray]:
 
 
 @njit(cache=True)
-def _compensated_prefix(rho, hi, lo):
-    """Prefix sums of rho^(m-1), m = 0..5, as double-double (hi + lo, Neumaier summation)."""
+def _compensated_prefix_at(rho, stops, hi, lo):
+    """Prefix sums of rho^(m-1), m = 0..5, over rho[:stop] for each of the ascending ``stops``
+    (in [0, n]), as double-double (hi + lo, Neumaier summation): one pass over rho."""
     n = rho.shape[0]
+    n_stops = stops.shape[0]
     s = np.zeros(6)
     c = np.zeros(6)
     x = np.empty(6)
-    for m in range(6):
-        hi[m, 0] = 0.0
-        lo[m, 0] = 0.0
-    for k in range(n):
+    q = 0
+    for k in range(n + 1):
+        while q < n_stops and stops[q] == k:
+            for m in range(6):
+                hi[m, q] = s[m]
+                lo[m, q] = c[m]
+            q += 1
+        if q == n_stops or k == n:
+            break
         value = rho[k]
         x[0] = 1.0 / value
         x[1] = 1.0
@@ -202,12 +209,14 @@ def _compensated_prefix(rho, hi, lo):
             else:
                 c[m] += (x[m] - t) + s[m]
             s[m] = t
-            hi[m, k + 1] = t
-            lo[m, k + 1] = c[m]
 
 
 class PairSums:
-    """Fast exact T_K(r) = sum_{i<j} [W_K(rho_ij + r) - W_K(|rho_ij - r|)] / rho_ij for sorted rho."""
+    """Fast exact T_K(r) = sum_{i<j} [W_K(rho_ij + r) - W_K(|rho_ij - r|)] / rho_ij for sorted rho.
+
+    The compensated prefix sums are evaluated only where the windows of the asked radii begin
+    and end (one pass over rho per new set of radii, kept for the next kernel), so memory is
+    O(n_r) beyond the distances themselves and the time O(P + n_r log P)."""
 
     def __init__(self, distances: np.ndarray, radius: float):
         rho = np.ascontiguousarray(distances, dtype=np.float64)
@@ -216,9 +225,19 @@ class PairSums:
         self.rho = rho
         self.radius = float(radius)
         self.w = {k: v.astype(np.longdouble) for k, v in _kernel_polynomials(radius).items()}
-        self.hi = np.empty((6, rho.size + 1))
-        self.lo = np.empty((6, rho.size + 1))
-        _compensated_prefix(rho, self.hi, self.lo)
+        self._stops = np.empty(0, dtype=np.int64)
+        self._hi = np.empty((6, 0))
+        self._lo = np.empty((6, 0))
+
+    def _prefix(self, stops: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Double-double prefix sums (hi, lo), shape (6, stops.size), at the indices ``stops``."""
+        if not np.isin(stops, self._stops).all():
+            self._stops = np.union1d(self._stops, stops).astype(np.int64)
+            self._hi = np.empty((6, self._stops.size))
+            self._lo = np.empty((6, self._stops.size))
+            _compensated_prefix_at(self.rho, self._stops, self._hi, self._lo)
+        column = np.searchsorted(self._stops, stops)
+        return self._hi[:, column], self._lo[:, column]
 
     @staticmethod
     def _coefficients(w, r, alpha, beta):
@@ -231,13 +250,21 @@ class PairSums:
                 c[:, m] += w[n] * math.comb(n, m) * alpha**m * (beta * r) ** (n - m)
         return c
 
-    def _window(self, lo, hi):
-        """Sums of rho^(m-1) over rho in [lo, hi) for each r, shape (n_r, 6), from the
-        double-double prefix sums (accurate to rounding of the window sum itself)."""
-        a = np.searchsorted(self.rho, np.asarray(lo, dtype=float), side="left")
-        b = np.searchsorted(self.rho, np.asarray(np.maximum(hi, lo), dtype=float), side="left")
-        window = (self.hi[:, b] - self.hi[:, a]) + (self.lo[:, b] - self.lo[:, a])
-        return window.T.astype(np.longdouble)
+    def _windows(self, bounds):
+        """Sums of rho^(m-1) over rho in [lo, hi) for each (lo, hi) of ``bounds`` and each r,
+        shape (n_r, 6) each, from the double-double prefix sums (accurate to rounding of the
+        window sum itself)."""
+        starts = [np.searchsorted(self.rho, np.asarray(lo, dtype=float), side="left") for lo, _ in bounds]
+        ends = [np.searchsorted(self.rho, np.asarray(np.maximum(hi, lo), dtype=float), side="left")
+                for lo, hi in bounds]
+        hi_sums, lo_sums = self._prefix(np.concatenate(starts + ends).astype(np.int64))
+        windows, n_r = [], starts[0].size
+        for w in range(len(bounds)):
+            a = slice(w * n_r, (w + 1) * n_r)
+            b = slice((len(bounds) + w) * n_r, (len(bounds) + w + 1) * n_r)
+            window = (hi_sums[:, b] - hi_sums[:, a]) + (lo_sums[:, b] - lo_sums[:, a])
+            windows.append(window.T.astype(np.longdouble))
+        return windows
 
     def __call__(self, kernel: str, r) -> np.ndarray:
         r = np.atleast_1d(np.asarray(r, dtype=np.longdouble))
@@ -249,10 +276,8 @@ class PairSums:
         lo = np.maximum(r - two_r, 0)
         hi = r + two_r
         split = np.clip(two_r - r, lo, hi)  # rho + r < 2R below, clamped W(2R) above
-        plus = self._window(lo, split)
-        const = self._window(split, hi)
-        below = self._window(lo, np.minimum(r, hi))
-        above = self._window(np.maximum(r, lo), hi)
+        plus, const, below, above = self._windows(
+            [(lo, split), (split, hi), (lo, np.minimum(r, hi)), (np.maximum(r, lo), hi)])
         total = np.einsum("rm,rm->r", self._coefficients(w, r, 1, 1), plus)
         total += w2 * const[:, 0]
         total -= np.einsum("rm,rm->r", self._coefficients(w, r, -1, 1), below)
@@ -344,14 +369,11 @@ def correlation_functions(positions, box, r, diameter: float = 1.0) -> dict[str,
     rho = pair_distances(positions, cell.box, min(r.max() + diameter, cell.half_width))
     positive = r > 0
     two_body = {kernel: np.zeros(r.shape) for kernel in ("v", "h", "J")}
-    for block in _radius_blocks(r, rho, diameter):
-        # only pairs with |rho - r| < D enter a radius: one slice of the sorted distances per block
-        lo = np.searchsorted(rho, max(r[block].min() - diameter, 0.0), side="left")
-        hi = np.searchsorted(rho, r[block].max() + diameter, side="right")
-        sums = PairSums(rho[lo:hi], R)
-        rb = r[block]
+    if positive.any():
+        sums = PairSums(rho, R)
+        rp = r[positive]
         for kernel in ("v", "h", "J"):
-            two_body[kernel][block] = np.asarray(sums(kernel, rb), dtype=float) / (volume * rb)
+            two_body[kernel][positive] = np.asarray(sums(kernel, rp), dtype=float) / (volume * rp)
     if not positive.all():  # limit r -> 0: sum over pairs with rho < 2R of 2 K(rho), / V
         close = rho[rho < 2 * R]
         for kernel in ("v", "h", "J"):
@@ -366,31 +388,6 @@ def correlation_functions(positions, box, r, diameter: float = 1.0) -> dict[str,
         "F_ss_two_body": two_body["J"],
         "phi": phi, "s": s, "rho": n / volume, "n": n, "volume": volume,
     }
-
-
-#: most pair distances in the prefix sums of one block of radii (memory: 12 doubles per pair)
-MAX_PAIRS_PER_BLOCK = 4_000_000
-
-
-def _radius_blocks(r, rho, diameter):
-    """Index arrays of consecutive positive radii whose pair slices [r_min - D, r_max + D] hold
-    at most about MAX_PAIRS_PER_BLOCK distances (at least one radius per block)."""
-    positive = np.flatnonzero(r > 0)
-    if positive.size == 0:
-        return []
-    order = positive[np.argsort(r[positive], kind="stable")]
-    blocks, current = [], [order[0]]
-    first = r[order[0]]
-    for index in order[1:]:
-        lo = np.searchsorted(rho, max(first - diameter, 0.0))
-        hi = np.searchsorted(rho, r[index] + diameter, side="right")
-        if hi - lo > MAX_PAIRS_PER_BLOCK:
-            blocks.append(np.array(current))
-            current, first = [index], r[index]
-        else:
-            current.append(index)
-    blocks.append(np.array(current))
-    return blocks
 
 
 def _kernel_values(kernel, t, R):
