@@ -21,7 +21,7 @@ from randmedia.config import load_config, validate_config
 PAPERS = ("debye2020", "mrj2016", "sphere2019")
 #: rules with a script but no benchmark: the report pages and the record, which read the merged
 #: benchmark files (their own time would be in no table)
-NO_BENCHMARK = {f"{paper}_{rule}" for paper in PAPERS for rule in ("report_tables", "record")}
+NO_BENCHMARK = {f"{paper}_{rule}" for paper in (*PAPERS, "debye3d") for rule in ("report_tables", "record")}
 
 
 # --------------------------------------------------------------------------- randmedia.report

@@ -263,6 +263,8 @@ DEBYE3D_TARGETS = [
 
 
 rule debye3d:
-    """Every output of the 3D Debye study (beyond the papers)."""
+    """Every output of the 3D Debye study (beyond the papers), with its report pages."""
     input:
         DEBYE3D_TARGETS,
+        # rule debye3d_report_tables (report.smk, included after this file)
+        lambda wildcards: REPORT_PAGES["debye3d"],

@@ -1,7 +1,8 @@
 # The record of a paper-config run (randmedia.record): `snakemake record` runs what is out of
 # date and copies each paper's small final outputs (comparison, notes, tables, figures as PNG,
-# runtimes, run.json) to record/{paper}/ and the status table to record/README.md.
-# Included after report.smk (it reads each paper's merged benchmarks.csv).
+# runtimes, run.json) to record/{paper}/ and the status table to record/README.md; also the
+# 3D study beyond the papers (record/debye3d/), which `snakemake record` runs although `all`
+# does not. Included after report.smk (it reads each paper's merged benchmarks.csv).
 #
 # Only the paper's own configuration is recorded under record/ (record_root, common.smk); any other
 # configuration writes results/record/, so a quick or extended run never overwrites the

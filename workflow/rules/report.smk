@@ -17,14 +17,17 @@
 
 import re
 
-#: the targets of each paper (their CSV files become report pages)
+#: the targets of each paper (their CSV files become report pages); debye3d, the 3D study beyond
+#: the papers, has the same pages and a record (record.smk) but is not part of `all`
 REPORT_PAPERS = {
     "debye2020": DEBYE2020_TARGETS,
     "mrj2016": MRJ2016_TARGETS,
     "sphere2019": SPHERE2019_TARGETS,
+    "debye3d": DEBYE3D_TARGETS,
 }
 
-REPORT_TARGETS = []
+#: the report pages of each entry of REPORT_PAPERS
+REPORT_PAGES = {}
 
 for _paper, _targets in REPORT_PAPERS.items():
     # the paper's CSV targets and every CSV its comparison rule writes (comparison_notes.csv)
@@ -61,5 +64,8 @@ for _paper, _targets in REPORT_PAPERS.items():
         script:
             "../scripts/report_tables.py"
 
-    REPORT_TARGETS += [results_path(f"{_paper}/report/{name}.html") for name, _, _ in _pages.values()]
-    REPORT_TARGETS += [results_path(f"{_paper}/benchmarks.csv"), results_path(f"{_paper}/report/benchmarks.html")]
+    REPORT_PAGES[_paper] = [results_path(f"{_paper}/report/{name}.html") for name, _, _ in _pages.values()]
+    REPORT_PAGES[_paper] += [results_path(f"{_paper}/benchmarks.csv"), results_path(f"{_paper}/report/benchmarks.html")]
+
+#: the report pages of the default target `all` (the three papers)
+REPORT_TARGETS = [path for paper in ("debye2020", "mrj2016", "sphere2019") for path in REPORT_PAGES[paper]]
