@@ -257,12 +257,12 @@ class PairSums:
         starts = [np.searchsorted(self.rho, np.asarray(lo, dtype=float), side="left") for lo, _ in bounds]
         ends = [np.searchsorted(self.rho, np.asarray(np.maximum(hi, lo), dtype=float), side="left")
                 for lo, hi in bounds]
-        hi_sums, lo_sums = self._prefix(np.concatenate(starts + ends).astype(np.int64))
-        windows, n_r = [], starts[0].size
-        for w in range(len(bounds)):
-            a = slice(w * n_r, (w + 1) * n_r)
-            b = slice((len(bounds) + w) * n_r, (len(bounds) + w + 1) * n_r)
-            window = (hi_sums[:, b] - hi_sums[:, a]) + (lo_sums[:, b] - lo_sums[:, a])
+        self._prefix(np.concatenate(starts + ends).astype(np.int64))  # one pass for every window end
+        windows = []
+        for start, end in zip(starts, ends):
+            hi_start, lo_start = self._prefix(start)  # looked up in the sums just made
+            hi_end, lo_end = self._prefix(end)
+            window = (hi_end - hi_start) + (lo_end - lo_start)
             windows.append(window.T.astype(np.longdouble))
         return windows
 
