@@ -139,6 +139,9 @@ def test_only_the_paper_config_writes_the_committed_record(parsed_workflow):
         assert probes["quick"]["rules"][f"{paper}_record"]["output"] == [f"{QUICK_RESULTS}/record/{paper}"]
     assert probes["paper"]["rules"]["record"]["output"] == ["record/README.md"]
     assert probes["quick"]["rules"]["record"]["output"] == [f"{QUICK_RESULTS}/record/README.md"]
+    # `snakemake record` records the 3D study too; the default target `all` does not run it
+    assert sorted(probes["paper"]["rules"]["record"]["input"]) == sorted(f"record/{paper}" for paper in RECORDED)
+    assert not any("/debye3d/" in path for path in probes["paper"]["rules"]["all"]["input"])
 
 
 @pytest.fixture(scope="module")
