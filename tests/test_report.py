@@ -262,3 +262,24 @@ def test_report_of_the_quick_run(quick_run, tmp_path):
         assert (merged["s"] >= 0).all() and (merged["max_rss"] > 0).all()
         assert merged["rule"].str.contains(rf"^{paper}_fig|^{paper}_figure$").any()
         assert f"{QUICK_RESULTS}/{paper}/report/benchmarks.html" in results
+
+
+@pytest.mark.workflow
+def test_report_with_the_3d_study_when_asked_by_name(quick_run, tmp_path):
+    """debye3d is not part of `all`: after `snakemake debye3d` its figures and pages are in a
+    report asked for with `-- all debye3d` (the front page's instruction), not in the default one."""
+    result = run_snakemake(quick_run, "--cores", "2", "--configfile", "config/quick.yaml", "debye3d")
+    assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-5000:]
+    categories = {}
+    for name, targets in (("default", ()), ("with_3d", ("--", "all", "debye3d"))):
+        target = tmp_path / f"{name}.html"
+        result = run_snakemake(quick_run, "--report", str(target), "--configfile", "config/quick.yaml", *targets)
+        assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
+        categories[name] = report_data(target.read_text(), "categories")
+    assert "debye3d" not in categories["default"]
+    assert set(categories["with_3d"]) == {*PAPERS, "debye3d"}
+    entries = categories["with_3d"]["debye3d"]
+    assert f"{QUICK_RESULTS}/debye3d/figures/s2.png" in entries["Validation"]
+    assert f"{QUICK_RESULTS}/debye3d/report/comparison.html" in entries["Comparison"]
+    assert "debye3d" in (workflow_text := (Path(quick_run) / "workflow/report/workflow.rst").read_text())
+    assert "-- all debye3d" in workflow_text
