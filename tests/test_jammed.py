@@ -280,9 +280,11 @@ def test_rattlers_are_found():
     assert analysis.rattler[0] and analysis.rattler.sum() == 1
 
 
-def test_tj_is_deterministic_and_resumes_bit_for_bit(tmp_path, monkeypatch):
+@pytest.mark.parametrize("backend", ["highs-hipo", "highs-simplex"])
+def test_tj_is_deterministic_and_resumes_bit_for_bit(tmp_path, monkeypatch, backend):
+    """Also with the warm-started dual simplex, whose basis the checkpoint carries."""
     start, box = random_sequential_addition(np.random.default_rng(11), 50, 0.25)
-    params = jammed.TJParameters()
+    params = jammed.TJParameters(backend=backend)
     reference = jammed.jam(start, box, params)
     again = jammed.jam(start, box, params)
     np.testing.assert_array_equal(reference.positions, again.positions)
@@ -311,6 +313,32 @@ def test_tj_is_deterministic_and_resumes_bit_for_bit(tmp_path, monkeypatch):
     np.savez(other, key="not this one")
     fresh = jammed.jam(start, box, params, checkpoint=other)
     np.testing.assert_array_equal(fresh.positions, reference.positions)
+
+
+def test_carried_basis_keeps_the_status_of_rows_still_listed_and_enters_new_ones_basic():
+    previous = packing_lp.LPBasis(col_status=np.array([0, 1, 2], np.int8),
+                                  row_status=np.array([2, 1, 0], np.int8),
+                                  row_keys=np.array([30, 10, 20]))
+    cols, rows = packing_lp.carry_basis(previous, np.array([20, 40, 30]), 3)
+    np.testing.assert_array_equal(cols, [0, 1, 2])
+    np.testing.assert_array_equal(rows, [0, 1, 2])   # 20 was at its bound 0, 40 is new, 30 kept 2
+    with pytest.raises(ValueError, match="columns"):
+        packing_lp.carry_basis(previous, np.array([20]), 4)
+
+
+def test_warm_started_dual_simplex_reaches_the_cold_optimum_in_fewer_iterations(packing3d):
+    """The TJ LP of a state one step away from the previous LP's state (the packing
+    expanded by 1 %, then one step), solved from the previous basis and from scratch."""
+    params = jammed.TJParameters(backend="highs-simplex")
+    positions, box = packing3d.positions * 1.01, packing3d.box * 1.01
+    moved, moved_box, first = jammed.tj_step(positions, box, params)
+    assert isinstance(first["basis"], packing_lp.LPBasis)
+    _, _, warm = jammed.tj_step(moved, moved_box, params, basis=first["basis"])
+    _, _, cold = jammed.tj_step(moved, moved_box, params)
+    assert warm["trace"] == pytest.approx(cold["trace"], abs=1e-12)
+    assert warm["simplex_iterations"] < cold["simplex_iterations"] / 2
+    # an interior point gives no basis and takes none
+    assert jammed.tj_step(moved, moved_box, jammed.TJParameters())[2]["basis"] is None
 
 
 def test_unconverged_construction_raises():

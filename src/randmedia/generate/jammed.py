@@ -68,6 +68,11 @@ by 1e-9 - 1e-8 D and passed the jamming test only from a 1e-8 D contact gap. Wit
 solved to a vertex converges too (a few LPs): its active rows are exact, as with a vertex
 backend from the start. The LPs of the final phase are marked in the history (``final``).
 
+Warm start. With the dual simplex (``highs-simplex``) each LP starts from the optimal basis
+of the previous one, its rows matched by pair (:func:`packing_lp.carry_basis`); the basis is
+part of the checkpoint. A start that needs too many iterations gives way to IPX + crossover
+(:func:`packing_lp.warm_iteration_limit`; docs/mrj2016.md, "A warm-started dual simplex").
+
 Start: random sequential addition at ``initial_phi``
 (:func:`randmedia.generate.rsa.random_sequential_addition`). The construction is
 deterministic given the start, so a run resumed from a checkpoint (saved at an LP
@@ -400,7 +405,8 @@ def leave_vertex(positions: np.ndarray, box: np.ndarray, strain: np.ndarray, dis
 
 
 def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diameter: float = 1.0,
-            threads: int = 1, trust: float = 1.0, start_volume: float | None = None):
+            threads: int = 1, trust: float = 1.0, start_volume: float | None = None,
+            basis: packing_lp.LPBasis | None = None):
     """One LP of the TJ construction (steps 1-4 of the module docstring), with the
     translation and strain bounds multiplied by ``trust`` (<= 1).
 
@@ -425,6 +431,9 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     start_volume : float, optional
         Cell volume V_0 at the start of the construction: scales ``params.translation_max``
         by (V / V_0)^(1/d) (default: the current volume, scale 1).
+    basis : packing_lp.LPBasis, optional
+        The optimal basis of the previous LP of the construction: a backend of
+        :data:`packing_lp.WARM_BACKENDS` starts from it (:func:`packing_lp.carry_basis`).
 
     Returns
     -------
@@ -434,7 +443,8 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
         New cell, LLL-reduced (:func:`reduce_cell`).
     record : dict
         Per-LP record (``trace`` = Tr epsilon, ``rescale``, ``rows``, timings, iteration
-        counts, bound statistics).
+        counts, bound statistics) and ``basis``, the LP's optimal :class:`packing_lp.LPBasis`
+        (None from an interior point).
     """
     n, dim = positions.shape
     if params.shrink_with_trust and trust < 1.0:
@@ -465,10 +475,14 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     if bound.max(initial=0.0) > 1e-12 * diameter:
         raise ConstructionError(f"overlap of {bound.max():.3g} D before an LP (bug)")
     bound = np.minimum(bound, 0.0)  # round-off overlaps (< 1e-12 D) count as contacts
+    row_keys = i.astype(np.int64) * n + j
+    start_basis = None
+    if basis is not None and params.backend in packing_lp.WARM_BACKENDS:
+        start_basis = packing_lp.carry_basis(basis, row_keys, len(cost))
     build = time.perf_counter() - tic
     try:
         solution = packing_lp.solve(cost, matrix, bound, -upper, upper, backend=params.backend,
-                                    threads=threads)
+                                    threads=threads, start_basis=start_basis)
     except packing_lp.LPError:
         # x = 0 is feasible, so this is a numerical failure of the solver (seen with IPX at
         # tiny trust factors): the dual simplex decides
@@ -490,7 +504,9 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
               "bound_dual_sum": float(duals[at_bound].sum()), "build_seconds": build,
               "ipm_iterations": solution.ipm_iterations,
               "crossover_iterations": solution.crossover_iterations,
-              "simplex_iterations": solution.simplex_iterations}
+              "simplex_iterations": solution.simplex_iterations,
+              "basis": None if solution.col_status is None else
+              packing_lp.LPBasis(solution.col_status, solution.row_status, row_keys)}
     return moved, new_box, record
 
 
@@ -575,8 +591,9 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     run = ResumableRun(checkpoint, _checkpoint_key(positions, box, params, diameter), log,
                        checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
     state = run.resume(_restore)
+    basis = None  # the optimal basis of the last LP, where its backend gives one
     if state is not None:  # saved at an LP boundary, exactly as the step left it
-        positions, box, history = state
+        positions, box, history, basis = state
         log.info("resumed from %s after %d LPs (phi = %.6f)", checkpoint, len(history["phi"]),
                  history["phi"][-1] if history["phi"] else float("nan"))
     else:
@@ -624,11 +641,12 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         return False
 
     def step() -> None:
-        nonlocal positions, box, trust, jammed
+        nonlocal positions, box, trust, jammed, basis
         phi_old = packing_fraction(positions, box, diameter)
         step_params = replace(params, backend=params.final_backend) if final else params
         new_positions, new_box, record = tj_step(positions, box, step_params, diameter, threads, trust,
-                                                 start_volume)
+                                                 start_volume, basis)
+        basis = record.pop("basis")
         record["final"] = int(final)
         phi_new = packing_fraction(new_positions, new_box, diameter)
         if -record["trace"] <= params.tolerance and trust == 1.0:
@@ -658,7 +676,7 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
             history[name].append(record[name])
         _report(progress, history, dim, params.max_lps)
 
-    run.loop(step, finished, lambda: _checkpoint_arrays(positions, box, history))
+    run.loop(step, finished, lambda: _checkpoint_arrays(positions, box, history, basis))
     log.info("converged after %d LPs in %.1f s (%.1f s CPU): phi = %.6f", len(history["phi"]),
              run.seconds, run.cpu_seconds, history["phi"][-1])
     run.finish()
@@ -696,15 +714,24 @@ def _checkpoint_key(positions, box, params, diameter) -> str:
     return checkpoint_key(params=asdict(params), diameter=diameter, start=array_digest(positions, box))
 
 
-def _checkpoint_arrays(positions, box, history) -> dict:
-    """What a checkpoint holds (the driver adds its clocks ``elapsed`` and ``cpu``)."""
-    return {"positions": positions, "box": box, **{f"history_{k}": np.asarray(v) for k, v in history.items()}}
+def _checkpoint_arrays(positions, box, history, basis: packing_lp.LPBasis | None = None) -> dict:
+    """What a checkpoint holds (the driver adds its clocks ``elapsed`` and ``cpu``): the
+    state, the per-LP history and the last LP's basis, if any, so that a warm-started
+    backend resumes from the basis it would have had."""
+    arrays = {"positions": positions, "box": box,
+              **{f"history_{k}": np.asarray(v) for k, v in history.items()}}
+    if basis is not None:
+        arrays.update(basis_col=basis.col_status, basis_row=basis.row_status, basis_keys=basis.row_keys)
+    return arrays
 
 
 def _restore(data: dict):
-    """(positions, box, history) from a checkpoint's arrays (KeyError if one is missing)."""
+    """(positions, box, history, basis) from a checkpoint's arrays (KeyError if one is missing;
+    basis None if none was saved)."""
     history = {k: data[f"history_{k}"].tolist() for k in _HISTORY_KEYS + ("trust_next",)}
-    return data["positions"], data["box"], history
+    basis = (packing_lp.LPBasis(data["basis_col"], data["basis_row"], data["basis_keys"])
+             if "basis_keys" in data else None)
+    return data["positions"], data["box"], history, basis
 
 
 # --------------------------------------------------------------------------- output file

@@ -64,7 +64,8 @@ import scipy.sparse as sp
 #: augmented system, METIS ordering, no crossover: a point in the relative interior of the
 #: optimal face; ``highs-hipo-vertex``: with crossover to a vertex), the older interior point
 #: IPX + crossover to a vertex (``highs-ipm``) or alone (``highs-ipx``), dual simplex
-#: (``highs-simplex``), the first-order primal-dual method PDLP (``highs-pdlp``: cost linear in
+#: (``highs-simplex``; in a sequence of LPs warm-started from the previous one's basis,
+#: :func:`carry_basis`), the first-order primal-dual method PDLP (``highs-pdlp``: cost linear in
 #: the size, feasible only to ~1e-7) -- and HiGHS' dual simplex through
 #: ``scipy.optimize.linprog``. HiPO needs BLAS, METIS and AMD from the ``highspy-extras``
 #: wheel of highspy's own version (pinned together in pyproject.toml); where they are
@@ -79,14 +80,19 @@ BACKENDS = ("highs-hipo", "highs-hipo-vertex", "highs-ipm", "highs-ipx", "highs-
 HIPO_OPTIONS: Mapping[str, float] = MappingProxyType({
     "ipm_optimality_tolerance": 1e-12, "primal_feasibility_tolerance": 1e-10,
     "dual_feasibility_tolerance": 1e-10})
-#: HiGHS options of IPX + crossover (``highs-ipm``): at HiGHS' default primal feasibility
-#: tolerance (1e-7) the crossover's vertex may violate a row by ~2e-9 D (the N = 2000 packing
-#: of record/packings/mrj2016_uncertified: a step applied there overlaps a pair by 1.8e-9 D and
-#: its rescaling opens every contact by as much); the dual simplex's rows hold to 1e-11
-IPM_OPTIONS: Mapping[str, float] = MappingProxyType({
+#: HiGHS options of the vertex backends, IPX + crossover (``highs-ipm``) and the dual simplex
+#: (``highs-simplex``): at HiGHS' default primal feasibility tolerance (1e-7) the crossover's
+#: vertex may violate a row by ~2e-9 D (the N = 2000 packing of
+#: record/packings/mrj2016_uncertified: a step applied there overlaps a pair by 1.8e-9 D and
+#: its rescaling opens every contact by as much), and a warm-started dual simplex by ~1e-7 D
+#: (a polish at N = 2000 then ended with every contact open by more than 1e-9 D)
+VERTEX_OPTIONS: Mapping[str, float] = MappingProxyType({
     "primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10})
 #: the interior-point backends whose solution is not a vertex (no crossover)
 INTERIOR_BACKENDS = ("highs-hipo", "highs-ipx")
+#: the backend that starts from the basis of the previous LP of a sequence when one is
+#: given (:func:`carry_basis`): the dual simplex
+WARM_BACKENDS = ("highs-simplex",)
 
 
 def _highspy_version() -> str:
@@ -218,12 +224,56 @@ class LPSolution:
     ipm_iterations: int = 0
     crossover_iterations: int = 0
     simplex_iterations: int = 0
+    #: HiGHS' basis status of every column and row at a vertex (``HighsBasisStatus`` codes:
+    #: 0 lower, 1 basic, 2 upper, 3 zero, 4 nonbasic); None without a basis
+    col_status: np.ndarray | None = None
+    row_status: np.ndarray | None = None
+
+
+@dataclass(frozen=True)
+class LPBasis:
+    """The optimal basis of one LP of a sequence, its rows named by ``row_keys`` (a packing
+    LP: i n + j of the pair (i, j) of each row), so that the next LP, whose rows are the pairs
+    then listed, can start from it (:func:`carry_basis`)."""
+
+    col_status: np.ndarray
+    row_status: np.ndarray
+    row_keys: np.ndarray
+
+
+_BASIC = 1  # HighsBasisStatus.kBasic
+
+
+def carry_basis(previous: LPBasis, row_keys: np.ndarray, n_cols: int) -> tuple[np.ndarray, np.ndarray]:
+    """The start basis of an LP with the rows ``row_keys`` and ``n_cols`` columns from the
+    optimal basis of the previous LP of the sequence: a row keeps its status where its key
+    was a row before, a new row enters basic (its slack basic: the pair not in contact);
+    the columns keep theirs. The count of basic variables may then differ from the row
+    count (an "alien" basis): HiGHS repairs it before its dual simplex starts."""
+    if len(previous.col_status) != n_cols:
+        raise ValueError(f"carried basis has {len(previous.col_status)} columns, the LP {n_cols}")
+    order = np.argsort(previous.row_keys, kind="stable")
+    keys = previous.row_keys[order]
+    where = np.clip(np.searchsorted(keys, row_keys), 0, max(len(keys) - 1, 0))
+    found = (keys[where] == row_keys) if len(keys) else np.zeros(len(row_keys), bool)
+    rows = np.full(len(row_keys), _BASIC, dtype=np.int8)
+    rows[found] = previous.row_status[order][where[found]]
+    return previous.col_status.astype(np.int8), rows
 
 
 def fallback(backend: str) -> str:
     """The backend that decides an LP ``backend`` failed to solve although it is feasible (a
-    numerical failure): IPX + crossover after HiPO, the dual simplex after anything else."""
-    return "highs-ipm" if backend.startswith("highs-hipo") else "highs-simplex"
+    numerical failure, or a warm-started dual simplex past :func:`warm_iteration_limit`):
+    IPX + crossover after HiPO and the dual simplex, the dual simplex after anything else."""
+    return "highs-ipm" if backend.startswith("highs-hipo") or backend in WARM_BACKENDS else "highs-simplex"
+
+
+def warm_iteration_limit(n_rows: int) -> int:
+    """Iterations a warm-started dual simplex may take before IPX + crossover solves the LP
+    instead (:func:`fallback`): half the row count. After a large step the carried basis is a
+    poor start (measured at N = 2000, ~9000 rows: 62 000 iterations, 209 s, where IPX +
+    crossover takes ~9 s); an LP near the previous one needs tens to hundreds."""
+    return max(100, n_rows // 2)
 
 
 def check_backends(*backends: str) -> None:
@@ -239,7 +289,7 @@ def check_backends(*backends: str) -> None:
 
 def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lower: np.ndarray,
           col_upper: np.ndarray, *, backend: str = "highs-ipm", threads: int = 1,
-          sense: str = "min") -> LPSolution:
+          sense: str = "min", start_basis: tuple[np.ndarray, np.ndarray] | None = None) -> LPSolution:
     """Optimize cost.x subject to matrix x >= row_lower and col_lower <= x <= col_upper.
 
     ``backend``: one of :data:`BACKENDS`. ``threads`` = 1 keeps the
@@ -261,12 +311,16 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
         Solver threads (default 1).
     sense : str, optional
         "min" (default) or "max".
+    start_basis : (col_status, row_status), optional
+        A basis to start from (:func:`carry_basis`); used by the backends of
+        :data:`WARM_BACKENDS` only.
 
     Returns
     -------
     LPSolution
         Primal x, row duals, column duals (None for the scipy backend), objective (of the
-        given sense), wall and CPU seconds, iteration counts.
+        given sense), wall and CPU seconds, iteration counts, and the basis of a vertex
+        backend (``col_status``, ``row_status``).
     """
     if backend not in BACKENDS:
         raise ValueError(f"unknown LP backend {backend!r}; expected one of {BACKENDS}")
@@ -293,7 +347,7 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
         highs.setOptionValue("solver", "ipx")
         highs.setOptionValue("run_crossover", "on" if backend == "highs-ipm" else "off")
         if backend == "highs-ipm":
-            for name, value in IPM_OPTIONS.items():
+            for name, value in VERTEX_OPTIONS.items():
                 highs.setOptionValue(name, value)
     elif backend in ("highs-hipo", "highs-hipo-vertex"):
         # HiGHS' default hipo_system "choose" picks the normal equations for these LPs, which
@@ -310,6 +364,8 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
     else:
         highs.setOptionValue("solver", "simplex")
         highs.setOptionValue("simplex_strategy", 1)  # dual simplex
+        for name, value in VERTEX_OPTIONS.items():
+            highs.setOptionValue(name, value)
     lp = highspy.HighsLp()
     csc = sp.csc_matrix(matrix)
     lp.num_col_ = csc.shape[1]
@@ -324,6 +380,13 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
     lp.a_matrix_.index_ = csc.indices
     lp.a_matrix_.value_ = csc.data
     highs.passModel(lp)
+    if start_basis is not None and backend in WARM_BACKENDS:
+        basis = highspy.HighsBasis()
+        basis.col_status = [highspy.HighsBasisStatus(int(v)) for v in start_basis[0]]
+        basis.row_status = [highspy.HighsBasisStatus(int(v)) for v in start_basis[1]]
+        basis.valid, basis.alien = True, True
+        highs.setBasis(basis)
+        highs.setOptionValue("simplex_iteration_limit", warm_iteration_limit(csc.shape[0]))
     run_status = highs.run()
     status = highs.getModelStatus()
     if status != highspy.HighsModelStatus.kOptimal:
@@ -337,9 +400,16 @@ def solve(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray, col_lowe
     solution = highs.getSolution()
     info = highs.getInfo()
     ipm, crossover = int(info.ipm_iteration_count), int(info.crossover_iteration_count)
+    col_status = row_status = None
+    if backend not in INTERIOR_BACKENDS:
+        final_basis = highs.getBasis()
+        if final_basis.valid:
+            col_status = np.array([int(v) for v in final_basis.col_status], dtype=np.int8)
+            row_status = np.array([int(v) for v in final_basis.row_status], dtype=np.int8)
     simplex, pdlp = int(info.simplex_iteration_count), int(info.pdlp_iteration_count)
     return LPSolution(np.array(solution.col_value), np.array(solution.row_dual),
                       sign * float(info.objective_function_value), time.perf_counter() - tic,
                       ipm + simplex + pdlp, time.process_time() - cpu,
                       col_dual=sign * np.array(solution.col_dual), ipm_iterations=ipm + pdlp,
-                      crossover_iterations=crossover, simplex_iterations=simplex)
+                      crossover_iterations=crossover, simplex_iterations=simplex,
+                      col_status=col_status, row_status=row_status)
