@@ -15,9 +15,8 @@ from conftest import QUICK_RESULTS, REPO, run_snakemake
 from randmedia import record
 from randmedia.compare import NOTE_COLUMNS
 
-PAPERS = ("debye2020", "mrj2016", "sphere2019")
-#: what `snakemake record` records: the papers and the 3D study beyond them
-RECORDED = (*PAPERS, "debye3d")
+PAPERS = record.PAPERS
+RECORDED = record.STUDIES
 
 
 TABLE1 = REPO / "config" / "reference" / "sphere2019_table1_exponents.csv"

@@ -17,11 +17,11 @@ import pytest
 from conftest import QUICK_RESULTS, RESULTS_DIR, quick_config, run_snakemake
 from randmedia import report
 from randmedia.config import load_config, validate_config
+from randmedia.record import PAPERS, STUDIES
 
-PAPERS = ("debye2020", "mrj2016", "sphere2019")
 #: rules with a script but no benchmark: the report pages and the record, which read the merged
 #: benchmark files (their own time would be in no table)
-NO_BENCHMARK = {f"{paper}_{rule}" for paper in (*PAPERS, "debye3d") for rule in ("report_tables", "record")}
+NO_BENCHMARK = {f"{paper}_{rule}" for paper in STUDIES for rule in ("report_tables", "record")}
 
 
 # --------------------------------------------------------------------------- randmedia.report
@@ -278,7 +278,7 @@ def test_report_with_the_3d_study_when_asked_by_name(quick_run, tmp_path):
         assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
         categories[name] = report_data(target.read_text(), "categories")
     assert "debye3d" not in categories["default"]
-    assert set(categories["with_3d"]) == {*PAPERS, "debye3d"}
+    assert set(categories["with_3d"]) == set(STUDIES)
     entries = categories["with_3d"]["debye3d"]
     assert f"{QUICK_RESULTS}/debye3d/figures/s2.png" in entries["Validation"]
     assert f"{QUICK_RESULTS}/debye3d/report/comparison.html" in entries["Comparison"]

@@ -21,6 +21,7 @@ from bad_configs import BAD_CONFIGS, bad_config
 from conftest import QUICK_RESULTS, copy_workflow, quick_config, run_snakemake, snakemake_command
 from randmedia.compare import COLUMNS, UPPER_BOUND_NOTE, judged_deviation
 from randmedia.io import PROVENANCE_ATTRS, read_dataset
+from randmedia.record import PAPERS
 
 pytestmark = pytest.mark.workflow
 
@@ -37,7 +38,7 @@ EXPECTED_OUTPUTS = [
 
 #: the folders of the default target's outputs; the quick run's debye3d/ and record/ exist only
 #: once a test asks for them (tests/test_record.py's `record` makes both)
-DEFAULT_TARGET_FOLDERS = ("debye2020", "mrj2016", "sphere2019")
+DEFAULT_TARGET_FOLDERS = PAPERS
 
 
 def netcdf_files(workdir: Path) -> list[Path]:

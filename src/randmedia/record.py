@@ -54,8 +54,13 @@ from randmedia.compare import NOTE_COLUMNS
 from randmedia.io import atomic_output, write_csv
 from randmedia.report import benchmark_summary
 
-__all__ = ["PUBLISHED_VALUES", "RUN_FIELDS", "check_record", "comparison_summary", "config_sha256",
+__all__ = ["PAPERS", "PUBLISHED_VALUES", "STUDIES", "RUN_FIELDS", "check_record", "comparison_summary", "config_sha256",
            "paper_config", "published_values", "run_info", "status_table", "write_record", "write_status"]
+
+#: the three papers the study reproduces (the default target ``all`` runs them)
+PAPERS = ("debye2020", "mrj2016", "sphere2019")
+#: what ``snakemake record`` records: the papers and the 3D study beyond them (docs/debye3d.md)
+STUDIES = (*PAPERS, "debye3d")
 
 #: per paper: reference file (under config/reference/) -> its columns holding published values
 #: (the other columns are coordinates: r/D, kD, R, ...); every finite value must appear as the

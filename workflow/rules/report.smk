@@ -17,6 +17,8 @@
 
 import re
 
+from randmedia.record import PAPERS
+
 #: the targets of each paper (their CSV files become report pages); debye3d, the 3D study beyond
 #: the papers, has the same pages and a record (record.smk) but is not part of `all`
 REPORT_PAPERS = {
@@ -68,4 +70,4 @@ for _paper, _targets in REPORT_PAPERS.items():
     REPORT_PAGES[_paper] += [results_path(f"{_paper}/benchmarks.csv"), results_path(f"{_paper}/report/benchmarks.html")]
 
 #: the report pages of the default target `all` (the three papers)
-REPORT_TARGETS = [path for paper in ("debye2020", "mrj2016", "sphere2019") for path in REPORT_PAGES[paper]]
+REPORT_TARGETS = [path for paper in PAPERS for path in REPORT_PAGES[paper]]
