@@ -11,6 +11,14 @@
 
 MRJ_JAMMED = config["mrj2016"]["mrj"]
 MRJ_PACKING = results_path("mrj2016/configs/{system}/sample{k}.nc")
+#: measured CPU of one packing by the paper's route at N = 2000: the median of the eight kept
+#: packings (1652-8037 s; docs/mrj2016.md, "Routes compared")
+MRJ_PACKING_CPU_SECONDS = 3394
+#: how that CPU grows with N (a prediction from measured parts): the HiPO TJ LP costs ~N^1.6
+#: (4.1 s at N = 2000, 57 s at 10 000) and the dilute stage needs ~N^0.4 LPs (~540 at N = 500,
+#: ~900 at 2000), so N = 10 000 is predicted at ~24 CPU h; a job killed at a queue's time
+#: limit resumes from the packing's checkpoint when Snakemake runs it again
+MRJ_PACKING_CPU_EXPONENT = 2.0
 MRJ_SAMPLES = expand(MRJ_PACKING, system="mrj", k=range(MRJ_JAMMED["mrj"]["n_samples"]))
 MRJ_LARGE_SAMPLES = expand(MRJ_PACKING, system="mrj_large",
                            k=range(MRJ_JAMMED["mrj_large"]["n_samples"]))
@@ -53,9 +61,10 @@ rule mrj2016_jammed_packing:
     resources:
         # HiGHS IPX: ~2 GB for one LP of 16 000 spheres (measured)
         mem_mb=lambda wildcards: 500 + MRJ_JAMMED[wildcards.system]["n_particles"] // 4,
-        # minutes, for cluster queues: 3x the measured 1054 CPU s at N = 2000, scaled with the
-        # measured LP cost ~ N^2.4 (docs/mrj2016.md; N = 10 000: ~42 h)
-        runtime=lambda wildcards: max(30, int(3 * 1054 / 60 * (MRJ_JAMMED[wildcards.system]["n_particles"] / 2000) ** 2.4)),
+        # minutes, for cluster queues: 3x the median CPU of a paper-route packing at N = 2000
+        # (MRJ_PACKING_CPU_SECONDS), scaled with N^2 (MRJ_PACKING_CPU_EXPONENT)
+        runtime=lambda wildcards: max(30, int(3 * MRJ_PACKING_CPU_SECONDS / 60
+                                              * (MRJ_JAMMED[wildcards.system]["n_particles"] / 2000) ** MRJ_PACKING_CPU_EXPONENT)),
     script:
         "../scripts/mrj2016/jammed_packing.py"
 
