@@ -333,7 +333,9 @@ def fig04(inputs, settings, log):
     """
     descriptors, a_min = _fluids(inputs["descriptors"]), settings["a_min"]
     fig, ax = figure(aspect=0.8)
-    inset = ax.inset_axes([0.14, 0.1, 0.4, 0.36])  # lower left: the curves fall from the upper left
+    # upper right, above the curves (the y range is raised to make room): in the lower left it
+    # hid part of the U_cc curve and its labels crossed the main axes
+    inset = ax.inset_axes([0.5, 0.62, 0.45, 0.33])
     for k, (system, ds) in enumerate(descriptors.items()):
         a, scaled, sem, rho = _scaled(ds)
         keep = a >= a_min
@@ -354,8 +356,8 @@ def fig04(inputs, settings, log):
     inset.tick_params(labelsize=6, which="both")
     ax.set_xlabel(r"$a\rho^{1/2}$")
     ax.set_ylabel(r"$\sigma_n^2(a)/(\rho s)$")
-    ax.set_ylim(bottom=0)
-    legend_below(ax)  # the inset holds the lower left
+    ax.set_ylim(0, 1.8 * max((np.nanmax(line.get_ydata()) for line in ax.get_lines()), default=1.0))
+    legend_below(ax)
     return fig
 
 
