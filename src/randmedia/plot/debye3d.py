@@ -201,8 +201,12 @@ def surface(inputs, settings, log):
     fig.subplots_adjust(wspace=0.4)  # room for the middle and right panels' y-labels
     for ax, label in zip(axes, ("r / a", "r / a", "r / R")):
         ax.set_xlabel(label)
-        if ax.has_data():
-            ax.legend(fontsize=5)
+    if axes[0].has_data():  # in room made below the lowest curve (phi2 = 0.1, a F_sv >= 0.19)
+        axes[0].set_ylim(bottom=0)
+        axes[0].legend(fontsize=5, loc="lower center", ncol=3, columnspacing=0.6, handlelength=1.0,
+                       handletextpad=0.3)
+    if axes[2].has_data():
+        axes[2].legend(fontsize=5)
     return fig
 
 

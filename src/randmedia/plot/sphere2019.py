@@ -109,10 +109,6 @@ def _plain_log_ticks(ax) -> None:
         axis.set_minor_formatter(NullFormatter())
 
 
-def _panel_label(ax, label: str, x: float = 0.02, y: float = 0.97) -> None:
-    ax.text(x, y, f"({label})", transform=ax.transAxes, va="top", ha="left")
-
-
 def _first_frames(paths) -> list[np.ndarray]:
     """The first frame of each configuration file."""
     return [frames_of(read_dataset(path, SPHERE_CONFIG))[0] for path in paths]
@@ -227,7 +223,7 @@ def fig02(inputs, settings, log):
     inset.set_xlabel(r"$a$", fontsize=7, labelpad=1)
     inset.set_ylabel(r"$\sigma_n^2$", fontsize=7, labelpad=1)
     inset.tick_params(labelsize=6)
-    _panel_label(ax, "c")
+    ax.set_title("(c)")  # as (a) and (b); inside the axes it lay on the curves at small a
     return fig
 
 
