@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
+import time
+
 import numpy as np
+import pytest
 import xarray as xr
 
 from randmedia.io import write_dataset
-from randmedia.kept_configurations import keep, kept_path, matching_kept
+from randmedia.kept_configurations import CheckpointKeeper, keep, kept_path, matching_kept, unfinished_dir
 
 
 def _write(path, seed, config):
@@ -40,3 +43,49 @@ def test_an_unreadable_kept_file_does_not_match_and_keep_replaces_it(tmp_path):
     keep(output, path)
     assert matching_kept(path, 1, {})
     assert path.read_bytes() == output.read_bytes()
+
+
+def _checkpoint(path, content: bytes):
+    path.parent.mkdir(parents=True, exist_ok=True)
+    path.write_bytes(content)
+    return path
+
+
+def test_the_checkpoints_of_an_unfinished_packing_are_kept_and_taken_back(tmp_path):
+    """A job keeps its checkpoints beside the record while it runs; a job on a machine without
+    them takes them back before it starts, and the copies are removed once the packing is made."""
+    folder = unfinished_dir(tmp_path / "record", "mrj_large")
+    assert folder == tmp_path / "record" / "mrj_large" / "unfinished"
+    output = tmp_path / "results" / "sample0.nc"
+    output.parent.mkdir()
+    other_sample = _checkpoint(output.with_name(".sample1.checkpoint.npz"), b"sample 1")
+    # machine 1: the run writes checkpoints, is killed (an exception here), keeps them
+    with pytest.raises(RuntimeError):
+        with CheckpointKeeper(output, folder, seconds=3600) as keeper:
+            stage = _checkpoint(output.with_name(".sample0.checkpoint.dilute.npz"), b"dilute, 10 LPs")
+            keeper.sync()
+            assert (folder / "sample0.checkpoint.dilute.npz").read_bytes() == b"dilute, 10 LPs"
+            stage.write_bytes(b"dilute, 20 LPs")
+            raise RuntimeError("killed")
+    # brought up to date on the way out; another sample's checkpoint is not this job's
+    assert (folder / "sample0.checkpoint.dilute.npz").read_bytes() == b"dilute, 20 LPs"
+    assert sorted(p.name for p in folder.iterdir()) == ["sample0.checkpoint.dilute.npz"]
+    # machine 2 (no results/): the kept checkpoint is taken back, a local one is never overwritten
+    stage.unlink()
+    local_top = _checkpoint(output.with_name(".sample0.checkpoint.npz"), b"local")
+    _checkpoint(folder / "sample0.checkpoint.npz", b"kept, older")
+    with CheckpointKeeper(output, folder, seconds=0.01):
+        assert stage.read_bytes() == b"dilute, 20 LPs"
+        assert local_top.read_bytes() == b"local"
+        # the stage finishes and its checkpoint goes; its kept copy stays until the end
+        stage.unlink()
+        local_top.write_bytes(b"after the dilute stage")
+        for _ in range(500):  # the background copy, every 0.01 s
+            if (folder / "sample0.checkpoint.npz").read_bytes() == b"after the dilute stage":
+                break
+            time.sleep(0.01)
+        assert (folder / "sample0.checkpoint.npz").read_bytes() == b"after the dilute stage"
+        assert (folder / "sample0.checkpoint.dilute.npz").exists()
+    # the packing is made: nothing of it stays unfinished
+    assert not folder.exists()
+    assert other_sample.read_bytes() == b"sample 1"

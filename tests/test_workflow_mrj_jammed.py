@@ -88,7 +88,7 @@ def test_every_packing_is_kept_and_taken_back_instead_of_regenerated(jammed_run,
     on a machine without results/ takes it back (same seed and configuration) instead of making
     the packing again."""
     from conftest import copy_workflow
-    from randmedia.kept_configurations import kept_path
+    from randmedia.kept_configurations import kept_path, unfinished_dir
 
     keep_dir = f"{QUICK_RESULTS}/record/packings/mrj2016"
     for system, k, path in packing_files(jammed_run, section):
@@ -98,6 +98,8 @@ def test_every_packing_is_kept_and_taken_back_instead_of_regenerated(jammed_run,
         assert kept.identical(made)
         other = keep_dir + "_uncertified" if folder == keep_dir else keep_dir
         assert not (jammed_run / kept_path(other, system, k)).exists()
+        # the checkpoints kept while it ran are gone once it is made
+        assert not (jammed_run / unfinished_dir(keep_dir, system)).exists()
     fresh = copy_workflow(tmp_path / "fresh")
     target = kept_path(keep_dir, "mrj", 0)
     (fresh / target).parent.mkdir(parents=True)

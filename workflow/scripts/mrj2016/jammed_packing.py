@@ -10,7 +10,7 @@ from randmedia.describe import bond_order
 from randmedia.generate.jammed import packing_dataset
 from randmedia.generate.mrj import MAX_ATTEMPTS, MRJProtocol, make_packing_retrying
 from randmedia.io import write_dataset
-from randmedia.kept_configurations import keep, kept_path, matching_kept
+from randmedia.kept_configurations import CheckpointKeeper, keep, kept_path, matching_kept, unfinished_dir
 from randmedia.seeding import sample_seed
 from randmedia.studies.jammed_certificate import certified
 
@@ -65,6 +65,12 @@ found = next((path for path in kept if any(matching_kept(path, seed, config) for
 if found is not None:
     keep(found, output)
     log.info("taken from the kept copy %s (same seed and configuration): not regenerated", found)
+elif kept:
+    # its checkpoints kept beside the record while it runs, so that an unfinished packing
+    # resumes on another machine (taken back first when this machine has none)
+    with CheckpointKeeper(output, unfinished_dir(params["keep_dir"], system),
+                          seconds=params["checkpoint_seconds"], log=log):
+        make()
 else:
     make()
 
