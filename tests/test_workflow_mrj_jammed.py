@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import json
+
 import numpy as np
 import pandas as pd
 import pytest
@@ -64,6 +66,16 @@ def test_packings_follow_the_contract_and_are_jammed(jammed_run, section):
         assert ds.attrs["min_noncontact_gap"] > ds.attrs["gap_tolerance"]
         assert ds.attrs["min_noncontact_gap"] > 1e3 * max(max_contact_gap, 1e-16)
         assert 0 <= ds.attrs["Q6"] < 0.2 and ds.attrs["crystal_fraction"] < 0.05
+
+
+def test_a_system_polishes_with_its_own_solver(jammed_run, section):
+    """mrj_large's polish_solver (the quick config's as the paper config's: HiPO, then IPX +
+    crossover in a final phase) reaches its packings, and only them; the test above certifies
+    them strictly jammed at the same contact gap."""
+    assert section["mrj_large"]["polish_solver"]["backend"] != section["polish"]["backend"]
+    for system, k, path in packing_files(jammed_run, section):
+        polish = json.loads(read_dataset(path).attrs["config_json"])["polish"]
+        assert polish == {**section["polish"], **section[system].get("polish_solver", {})}
 
 
 def test_packings_table_matches_the_files(jammed_run, section):

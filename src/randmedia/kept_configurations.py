@@ -10,7 +10,7 @@ configuration (``config_json``, less the keys in :data:`RUN_ONLY_KEYS` that cann
 packing) must equal the job's. Anything else is regenerated, so a change of protocol never
 reuses an old packing.
 
-A packing that takes longer than a session on one machine (N = 10 000: ~24 CPU h predicted)
+A packing that takes longer than a session on one machine (N = 10 000: ~10-20 CPU h predicted)
 must also survive a change of machine *unfinished*. While it runs, its job copies its
 checkpoints (``.sample{k}.checkpoint*.npz`` beside the output) to
 ``record/packings/mrj2016/{system}/unfinished/`` (:class:`CheckpointKeeper`; the copies are

@@ -274,6 +274,12 @@ def record_root(paper):
 _PACKING_KEYS = ("route", "dilute", "compression", "inflation", "polish", "contacts", "bond_order_cutoff")
 
 
+def mrj_polish(section, system):
+    """The polish constants of ``system``'s packings: the shared ``polish`` of the config section
+    ``section`` (mrj2016.mrj) with the system's own ``polish_solver`` over it."""
+    return {**section["polish"], **section[system].get("polish_solver", {})}
+
+
 # MRJ_JAMMED: defined in mrj2016_jammed.smk (read when the rule asks, after all includes)
 def mrj_keep_dir(system):
     """record/packings/mrj2016 when this config makes the same packings of ``system`` as the paper
@@ -282,5 +288,6 @@ def mrj_keep_dir(system):
     paper = _PAPER_CONFIG["mrj2016"]["mrj"]
     same = (config["seed"] == _PAPER_CONFIG["seed"]
             and MRJ_JAMMED[system]["n_particles"] == paper[system]["n_particles"]
-            and all(MRJ_JAMMED[key] == paper[key] for key in _PACKING_KEYS))
+            and mrj_polish(MRJ_JAMMED, system) == mrj_polish(paper, system)
+            and all(MRJ_JAMMED[key] == paper[key] for key in _PACKING_KEYS if key != "polish"))
     return "record/packings/mrj2016" if same else results_path("record/packings/mrj2016")

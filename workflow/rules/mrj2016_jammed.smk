@@ -14,10 +14,10 @@ MRJ_PACKING = results_path("mrj2016/configs/{system}/sample{k}.nc")
 #: measured CPU of one packing by the paper's route at N = 2000: the median of the eight kept
 #: packings (1652-8037 s; docs/mrj2016.md, "Routes compared")
 MRJ_PACKING_CPU_SECONDS = 3394
-#: how that CPU grows with N (a prediction from measured parts): the HiPO TJ LP costs ~N^1.6
-#: (4.1 s at N = 2000, 57 s at 10 000) and the dilute stage needs ~N^0.4 LPs (~540 at N = 500,
-#: ~900 at 2000), so N = 10 000 is predicted at ~24 CPU h; a job killed at a queue's time
-#: limit resumes from the packing's checkpoint when Snakemake runs it again
+#: how that CPU grows with N, taken as N^2 (HiPO TJ LP ~N^1.6, dilute LP count ~N^0.4): 24 CPU h at
+#: N = 10 000, an upper bound -- the first N = 10 000 packing's measured parts predict ~10-20 CPU h
+#: (docs/mrj2016.md, "N = 10 000"); a job killed at a queue's time limit resumes from the
+#: packing's checkpoint when Snakemake runs it again
 MRJ_PACKING_CPU_EXPONENT = 2.0
 MRJ_SAMPLES = expand(MRJ_PACKING, system="mrj", k=range(MRJ_JAMMED["mrj"]["n_samples"]))
 MRJ_LARGE_SAMPLES = expand(MRJ_PACKING, system="mrj_large",
@@ -43,7 +43,7 @@ rule mrj2016_jammed_packing:
         compression=MRJ_JAMMED["compression"] if MRJ_JAMMED["route"] == "compression" else {},
         inflation=MRJ_JAMMED["inflation"] if MRJ_JAMMED["route"] == "compression" else {},
         dilute=MRJ_JAMMED["dilute"] if MRJ_JAMMED["route"] == "dilute" else {},
-        polish=MRJ_JAMMED["polish"],
+        polish=lambda wildcards: mrj_polish(MRJ_JAMMED, wildcards.system),
         contacts=MRJ_JAMMED["contacts"],
         bond_order_cutoff=MRJ_JAMMED["bond_order_cutoff"],
         checkpoint_seconds=MRJ_JAMMED["checkpoint_seconds"],
