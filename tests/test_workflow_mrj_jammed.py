@@ -69,9 +69,9 @@ def test_packings_follow_the_contract_and_are_jammed(jammed_run, section):
 
 
 def test_a_system_polishes_with_its_own_solver(jammed_run, section):
-    """mrj_large's polish_solver (the quick config's as the paper config's: HiPO, then IPX +
-    crossover in a final phase) reaches its packings, and only them; the test above certifies
-    them strictly jammed at the same contact gap."""
+    """mrj_large's polish_solver (the paper config's, which the quick config keeps: HiPO, then
+    IPX + crossover in a final phase) reaches its packings, and only them; the test above
+    certifies them strictly jammed at the same contact gap."""
     assert section["mrj_large"]["polish_solver"]["backend"] != section["polish"]["backend"]
     for system, k, path in packing_files(jammed_run, section):
         polish = json.loads(read_dataset(path).attrs["config_json"])["polish"]
