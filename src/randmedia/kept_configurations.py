@@ -131,12 +131,17 @@ class CheckpointKeeper:
                     continue
                 self._copied[name] = stamp
 
+    def _sync_or_warn(self) -> None:
+        """:meth:`sync`, an OSError only warned of: a full disk must not stop the construction,
+        and on the way out the construction's own error is the one to raise."""
+        try:
+            self.sync()
+        except OSError as error:
+            self.log.warning("could not keep the checkpoints in %s: %s", self.folder, error)
+
     def _run(self) -> None:
         while not self._stop.wait(self.seconds):
-            try:
-                self.sync()
-            except OSError as error:  # a full disk must not stop the construction
-                self.log.warning("could not keep the checkpoints in %s: %s", self.folder, error)
+            self._sync_or_warn()
 
     def __enter__(self) -> "CheckpointKeeper":
         self.take_back()
@@ -154,7 +159,4 @@ class CheckpointKeeper:
             if self.folder.is_dir() and not any(self.folder.iterdir()):
                 self.folder.rmdir()
         else:
-            try:
-                self.sync()
-            except OSError as error:  # the construction's own error is the one to raise
-                self.log.warning("could not keep the checkpoints in %s: %s", self.folder, error)
+            self._sync_or_warn()
