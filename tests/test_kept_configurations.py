@@ -86,6 +86,15 @@ def test_the_checkpoints_of_an_unfinished_packing_are_kept_and_taken_back(tmp_pa
             time.sleep(0.01)
         assert (folder / "sample0.checkpoint.npz").read_bytes() == b"after the dilute stage"
         assert (folder / "sample0.checkpoint.dilute.npz").exists()
-    # the packing is made: nothing of it stays unfinished
-    assert not folder.exists()
+    # the packing is made: nothing of it stays unfinished, here or kept
+    assert not folder.exists() and not local_top.exists()
+    assert other_sample.read_bytes() == b"sample 1"
+    # machine 3 (no results/), after a kill in the polish: both kept checkpoints come back, the
+    # run resumes from the top-level one and never opens the finished stage's; made, neither stays
+    kept_top = _checkpoint(folder / "sample0.checkpoint.npz", b"after the dilute stage")
+    kept_stage = _checkpoint(folder / "sample0.checkpoint.dilute.npz", b"dilute, finished")
+    with CheckpointKeeper(output, folder, seconds=3600):
+        assert stage.read_bytes() == b"dilute, finished" and local_top.exists()
+        local_top.unlink()  # the packing is made from it
+    assert not stage.exists() and not kept_stage.exists() and not kept_top.exists()
     assert other_sample.read_bytes() == b"sample 1"

@@ -87,7 +87,7 @@ class CheckpointKeeper:
     interval. A kept copy whose local file is gone (a finished stage, whose result the next
     stage's checkpoint holds) stays until the end: removing it before the next stage's first
     copy would leave nothing kept. On a normal exit (the packing is written and kept whole) the
-    kept checkpoints are removed; on an exception they are brought up to date once more and
+    kept checkpoints and any local one left (a finished stage's, taken back) are removed; on an exception they are brought up to date once more and
     left for the next run. Every copy is atomic (:func:`randmedia.io.atomic_output`).
     """
 
@@ -154,8 +154,10 @@ class CheckpointKeeper:
         if self._thread is not None:
             self._thread.join()
         if exc_type is None:
-            for kept in self._kept().values():
-                kept.unlink()
+            # the packing is made: its checkpoints are stale, here and kept -- locally too, where
+            # a finished stage's copy was taken back and the run resumed past it
+            for path in [*self._kept().values(), *self._local().values()]:
+                path.unlink(missing_ok=True)
             if self.folder.is_dir() and not any(self.folder.iterdir()):
                 self.folder.rmdir()
         else:

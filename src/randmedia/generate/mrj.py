@@ -37,7 +37,7 @@ from __future__ import annotations
 import logging
 import os
 import time
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import asdict, dataclass, field
 from pathlib import Path
 
@@ -273,9 +273,9 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
              f"{history['phi'][-1]:.7f}); the polish takes over")
     run.save(arrays)  # a kill in the polish resumes after the inflation
     polish_checkpoint = _polish_checkpoint(checkpoint)
-    packing = jam(positions, box, protocol.polish, checkpoint=polish_checkpoint,
-                  checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds,
-                  threads=threads)
+    packing = _nested_stage(run, lambda: jam(
+        positions, box, protocol.polish, checkpoint=polish_checkpoint,
+        checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds, threads=threads))
     seconds, cpu_seconds = run.seconds, run.cpu_seconds
     run.finish()
     n_inflation = len(history["phi"])
@@ -311,21 +311,17 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
                                                       protocol.dilute.initial_phi, dim)
         stage_checkpoint = None if checkpoint is None else \
             Path(checkpoint).with_name(Path(checkpoint).stem + ".dilute.npz")
-        wall, cpu = time.perf_counter(), time.process_time()
-        stage = jam(start, start_box, protocol.dilute.tj_parameters(n, dim), checkpoint=stage_checkpoint,
-                    checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds,
-                    threads=threads)
-        # a stage resumed from its own checkpoint ran partly in earlier processes: count that too
-        run.seconds_before += max(stage.seconds - (time.perf_counter() - wall), 0.0)
-        run.cpu_seconds_before += max(stage.cpu_seconds - (time.process_time() - cpu), 0.0)
+        stage = _nested_stage(run, lambda: jam(
+            start, start_box, protocol.dilute.tj_parameters(n, dim), checkpoint=stage_checkpoint,
+            checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds, threads=threads))
         positions, box, history = stage.positions, stage.box, stage.history
         log.info("dilute TJ stage: phi = %.6f after %d LPs (%.1f s CPU)", stage.phi, stage.n_lp,
                  stage.cpu_seconds)
         run.save({"positions": positions, "box": box,
                   **{f"history_{k}": np.asarray(v) for k, v in history.items()}})
-    packing = jam(positions, box, protocol.polish, checkpoint=_polish_checkpoint(checkpoint),
-                  checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds,
-                  threads=threads)
+    packing = _nested_stage(run, lambda: jam(
+        positions, box, protocol.polish, checkpoint=_polish_checkpoint(checkpoint),
+        checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds, threads=threads))
     seconds, cpu_seconds = run.seconds, run.cpu_seconds
     run.finish()
     n_dilute = len(history["phi"])
@@ -342,6 +338,18 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
 
 #: seeds tried per sample by :func:`make_packing_retrying` (the first and two redraws)
 MAX_ATTEMPTS = 3
+
+
+def _nested_stage(run: ResumableRun, stage: Callable[[], JammedPacking]) -> JammedPacking:
+    """``stage()``, a :func:`jam` with its own checkpoint inside ``run``: a stage resumed from
+    that checkpoint ran partly in earlier processes, whose clocks (kept in the stage's
+    checkpoint, returned in its ``seconds`` / ``cpu_seconds``) are added to ``run``'s, so the
+    packing's totals count every process, not only the last one."""
+    wall, cpu = time.perf_counter(), time.process_time()
+    result = stage()
+    run.seconds_before += max(result.seconds - (time.perf_counter() - wall), 0.0)
+    run.cpu_seconds_before += max(result.cpu_seconds - (time.process_time() - cpu), 0.0)
+    return result
 
 
 def attempt_checkpoint(checkpoint: str | os.PathLike | None, attempt: int) -> Path | None:
