@@ -87,8 +87,9 @@ class CheckpointKeeper:
     interval. A kept copy whose local file is gone (a finished stage, whose result the next
     stage's checkpoint holds) stays until the end: removing it before the next stage's first
     copy would leave nothing kept. On a normal exit (the packing is written and kept whole) the
-    kept checkpoints and any local one left (a finished stage's, taken back) are removed; on an exception they are brought up to date once more and
-    left for the next run. Every copy is atomic (:func:`randmedia.io.atomic_output`).
+    kept checkpoints and any local one left (a finished stage's, taken back) are removed; on an
+    exception they are brought up to date once more and left for the next run. Every copy is
+    atomic (:func:`randmedia.io.atomic_output`).
     """
 
     def __init__(self, output: str | os.PathLike, folder: str | os.PathLike, *, seconds: float = 60.0,
