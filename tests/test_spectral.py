@@ -152,7 +152,7 @@ def test_table_binnings_of_the_liquid_cell():
     n = np.array(list(itertools.product(range(-7, 8), repeat=3)), dtype=float)
     kmag = grid * np.linalg.norm(n, axis=1)
     values = (n ** 2).sum(axis=1)  # |n|^2, so each bin mean tells which shells it took
-    means, counts = spectral.binned_table_values(kmag, values, binnings)
+    means, counts, _ = spectral.binned_table_values(kmag, values, binnings)
     single = list(binnings).index("single_shell")
     for m in (1, 2, 3):
         assert counts[single, m - 1] == np.sum(values == 4 * m * m)
@@ -165,7 +165,7 @@ def test_table_binnings_of_the_liquid_cell():
     # on a cell whose shells the centres are not, single_shell does not apply
     other = spectral.table_binnings(labels, labels, np.eye(3) * 20.0, 0.133)
     assert np.isnan(other["single_shell"][0]).all() and np.isnan(other["labels"][0]).all()
-    means, counts = spectral.binned_table_values(kmag, values, other)
+    means, counts, _ = spectral.binned_table_values(kmag, values, other)
     assert np.isnan(means[list(other).index("single_shell")]).all()
     assert (counts[list(other).index("labels")] == 0).all()
 
@@ -198,5 +198,62 @@ def test_table_binnings_of_a_cell_smaller_than_the_table_spacing():
     binnings = spectral.table_binnings(labels, labels, np.eye(3) * 5.0, 0.133)
     assert np.isnan(binnings["grid_spacing"][0]).all()
     assert not np.isnan(binnings["table_spacing"][0]).any()
-    means, counts = spectral.binned_table_values(np.array([0.6, 1.2]), np.array([1.0, 2.0]), binnings)
+    means, counts, _ = spectral.binned_table_values(np.array([0.6, 1.2]), np.array([1.0, 2.0]), binnings)
     assert means[list(binnings).index("bin_width")].tolist()[:2] == [1.0, 2.0]
+
+
+def test_bin_sems_of_known_values():
+    """sqrt(sum v^2 / 2) / M per bin; NaN where the bin is empty; one value is an SEM too."""
+    k = np.array([0.1, 0.15, 0.3, 0.9])
+    v = np.array([1.0, 3.0, 5.0, 7.0])
+    sems = spectral.bin_sems(k, v, [0.0, 0.2, 0.4, 0.6])
+    np.testing.assert_allclose(sems[:2], [math.sqrt(5.0) / 2, 5.0 / math.sqrt(2.0)])
+    assert np.isnan(sems[2])
+
+
+def test_within_bin_sem_of_uniform_points_is_their_spread_over_samples():
+    """Known answer: for N uniform points S(k) has mean 1 and variance 1 - 1/N at every allowed
+    k != 0, independent over a half space, so a bin of M wavevectors has SEM sqrt(1 - 1/N) / sqrt(M);
+    bin_sems of one sample estimates it, and the SD of the bin means over 40 samples agrees
+    (pooled over the bins; a missing factor 2 in bin_sems would give a ratio of 2)."""
+    rng = np.random.default_rng(11)
+    n, edges = 300, np.arange(2.0, 8.01, 0.5)
+    means, sems = [], []
+    for _ in range(40):
+        positions = rng.random((n, 3)) @ TRICLINIC.T
+        _, _, kmag, S = spectral.structure_factor(positions, TRICLINIC, 8.0)
+        mean, count, _ = spectral.bin_means(kmag, S, edges)
+        means.append(mean), sems.append(spectral.bin_sems(kmag, S, edges))
+    means, sems = np.array(means), np.array(sems)
+    assert count.min() >= 20
+    exact = np.sqrt((1 - 1 / n) / count)
+    # each sample's estimate scatters by ~1.1/sqrt(M); the rms over 40 samples by ~4 % (M >= 20)
+    np.testing.assert_allclose(np.sqrt((sems ** 2).mean(axis=0)), exact, rtol=0.12)
+    ratio = means.var(axis=0, ddof=1).sum() / (sems ** 2).mean(axis=0).sum()
+    assert ratio == pytest.approx(1.0, abs=0.2)  # 12 bins, each variance +-23 %: pooled ~ +-8 %
+
+
+def test_one_sample_of_a_disordered_system_has_the_within_bin_sem():
+    """studies.mrj2016.summarize: the SEM of the spectral means is at least the samples' own
+    within-bin errors combined, sqrt(sum sem_i^2) / n; one sample keeps its own; a lattice
+    (expected_peaks) gets no such floor."""
+    from randmedia.studies.mrj2016 import spectral_samples, summarize
+
+    box = TRICLINIC
+    rng = np.random.default_rng(3)
+    labels = np.array([2.0, 4.0, 6.0])
+    chunks = [spectral_samples([(rsa_packing(rng, box, 150), box, 1.0)], k_max=8.0, bin_width=0.5,
+                               table_k=labels, table_width=0.5, first=i) for i in range(2)]
+    one = summarize(chunks[:1], "spectral")
+    own = one["chi_table_bin_sem"].isel(sample=0).values
+    assert np.isfinite(own).all() and (own > 0).all()
+    np.testing.assert_array_equal(one["chi_table_sem"].values, own)
+    np.testing.assert_array_equal(one["chi_table_binning_sem"].values,
+                                  one["chi_table_binning_bin_sem"].isel(sample=0).values)
+    two = summarize(chunks, "spectral")
+    floor = np.sqrt((two["chi_table_bin_sem"].values ** 2).sum(axis=0)) / 2
+    spread = two["chi_table"].std("sample", ddof=1).values / math.sqrt(2)
+    np.testing.assert_allclose(two["chi_table_sem"].values, np.fmax(spread, floor))
+    lattice = spectral_samples([(rsa_packing(rng, box, 150), box, 1.0)], k_max=8.0, bin_width=0.5,
+                               bragg=0)
+    assert np.isnan(summarize([lattice], "spectral")["chi_sem"].values).all()

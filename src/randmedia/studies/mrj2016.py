@@ -41,6 +41,9 @@ AVERAGED = {
     "points": ("E_V", "F"),
 }
 
+#: suffix of a spectral variable's per-sample within-bin SEM (:func:`spectral.bin_sems`)
+WITHIN_SEM = "_bin_sem"
+
 
 def load_configuration(path):
     """(positions, box, diameter) of one PARTICLE_CONFIG file (units D, diameter attr)."""
@@ -238,6 +241,7 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
     table_width = bin_width if table_width is None else table_width
     chi, S, counts, kmean, chi_table, table_counts = [], [], [], [], [], []
     chi_binnings, binning_counts, binning_widths = [], [], []
+    within = {name: [] for name in AVERAGED["spectral"]}  # bin_sems per sample
     bragg_rows = []
     for positions, box, diameter in configs:
         _, _, kmag, Sk = spectral.structure_factor(positions, box, k_max, eps=eps, nthreads=nthreads)
@@ -246,11 +250,14 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
         mean_chi, count, km = spectral.bin_means(kmag, chik, edges)
         mean_S, _, _ = spectral.bin_means(kmag, Sk, edges)
         chi.append(mean_chi), S.append(mean_S), counts.append(count), kmean.append(km)
+        within["chi"].append(spectral.bin_sems(kmag, chik, edges))
+        within["S"].append(spectral.bin_sems(kmag, Sk, edges))
         if table_k.size:
             binnings = spectral.table_binnings(table_labels, table_k, box, table_width)
-            means, numbers = spectral.binned_table_values(kmag, chik, binnings)
+            means, numbers, sems = spectral.binned_table_values(kmag, chik, binnings)
             own = list(binnings).index("bin_width")  # the table's own bins: table_width on table_k
             chi_table.append(means[own]), table_counts.append(numbers[own])
+            within["chi_table"].append(sems[own]), within["chi_table_binning"].append(sems)
             chi_binnings.append(means), binning_counts.append(numbers)
             binning_widths.append([width for _, width in binnings.values()])
         n = len(positions)
@@ -288,6 +295,12 @@ def spectral_samples(configs: Sequence, *, k_max: float, bin_width: float, table
                                  _meta("1/D", "bin width of each convention"))
         coords["binning"] = ("binning", list(spectral.TABLE_BINNINGS),
                              _meta("1", "bin convention for the tabulated kD (spectral.table_binnings)"))
+    for name, values in within.items():
+        if values:
+            dims, units = data[name][0], data[name][2]["units"]
+            data[f"{name}{WITHIN_SEM}"] = (dims, np.array(values), _meta(
+                units, "standard error of the bin mean within the sample (spectral.bin_sems: "
+                       "exponential S(k), independent wavevectors)"))
     data.update(_scalars(configs))
     attrs = {"kind": "spectral", "k_max": float(k_max), "bin_width": float(bin_width),
              "table_width": float(table_width), "nufft_eps": float(eps),
@@ -621,7 +634,9 @@ def summarize(chunks: Iterable[xr.Dataset], kind: str, *, spectral: dict | None 
     * windows: pooled number variance and jackknife SEM (Sec. VI B), skewness
       and excess kurtosis of N(R), pooled f_R(N) at R_f, and the fits
       b2 R^2 + b3 R^3 and b2 R^2 in units of lambda = rho^(-1/3) over R >= fit_r_min;
-    * spectral, points: concatenation, mean and SEM.
+    * spectral, points: concatenation, mean and SEM; the SEM is at least the samples' own
+      errors combined (spectral: within-bin, :func:`spectral.bin_sems`, for a disordered
+      system; points: binomial), so one sample has an SEM too.
 
     ``spectral`` (only its ``k_max``) is needed for correlation, ``windows`` for windows.
 
@@ -674,6 +689,18 @@ def summarize(chunks: Iterable[xr.Dataset], kind: str, *, spectral: dict | None 
             floor = np.sqrt(np.clip(mean * (1 - mean), 0, None) / scale)
             ds[f"{name}_sem"].values[:] = np.fmax(ds[f"{name}_sem"].values, floor)
             ds[f"{name}_sem"].attrs["long_name"] += " (at least the binomial error of the pooled points)"
+    if kind == "spectral" and "expected_peaks" not in ds.attrs:
+        # SEM floor of a disordered system: the within-bin errors of the samples combined,
+        # sqrt(sum_i sem_i^2) / n (spectral.bin_sems); with one sample it is the only SEM
+        for name in AVERAGED["spectral"]:
+            if f"{name}{WITHIN_SEM}" not in ds:
+                continue
+            own = ds[f"{name}{WITHIN_SEM}"].values
+            valid = np.isfinite(own)
+            with np.errstate(invalid="ignore", divide="ignore"):
+                floor = np.sqrt((np.where(valid, own, 0.0) ** 2).sum(axis=0)) / valid.sum(axis=0)
+            ds[f"{name}_sem"].values[:] = np.fmax(ds[f"{name}_sem"].values, floor)
+            ds[f"{name}_sem"].attrs["long_name"] += " (at least the samples' within-bin errors combined)"
     if kind == "windows":
         _summarize_windows(ds, windows)
         ds.attrs["fit_r_min"] = float(windows["fit_r_min"])
