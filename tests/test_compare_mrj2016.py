@@ -87,3 +87,18 @@ def test_spectral_table_takes_the_configured_reading_of_the_bins_where_it_applie
         table = table_spectral({"reference": reference}, {"spectral_binning": "grid_spacing"}, 4)
         assert table["chiV_over_D3"].tolist() == expected and (table["binning"] == reading).all()
         assert f"{BINNING_PREFIX}grid_spacing_over_D3" in table and f"{BINNING_PREFIX}labels_over_D3" in table
+
+
+def test_eq11_note_of_one_sample_says_it_has_no_sem():
+    """The reason of a failing Table V row quotes Eq. (11) of our S2; with one sample (Table V's
+    first N = 10 000 packing) there is no SEM over samples, and the note says so instead of nan."""
+    import xarray as xr
+
+    from randmedia.compare.mrj2016 import _eq11_note
+
+    k = np.array([8.9, 9.1])
+    one = xr.Dataset({"chi_ft_mean": ("k_ft", [1e-5, 2e-5]), "chi_ft_sem": ("k_ft", [np.nan, np.nan])},
+                     coords={"k_ft": k})
+    assert _eq11_note(one, 9.0) == "; Eq. (11) of our S2 gives 1.5e-05 D^3 (one sample: no SEM over samples) at this kD"
+    two = one.assign(chi_ft_sem=("k_ft", [1e-6, 1e-6]))
+    assert _eq11_note(two, 9.0).endswith("1.5e-05 +- 1e-06 D^3 at this kD")

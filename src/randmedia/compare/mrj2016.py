@@ -394,7 +394,8 @@ def _eq11_note(corr, k: float) -> str:
     k_ft = corr["k_ft"].values
     value = float(np.interp(k, k_ft, corr["chi_ft_mean"].values))
     sem = float(np.interp(k, k_ft, corr["chi_ft_sem"].values))
-    return f"; Eq. (11) of our S2 gives {value:.3g} +- {sem:.2g} D^3 at this kD"
+    error = f"+- {sem:.2g} D^3" if np.isfinite(sem) else "D^3 (one sample: no SEM over samples)"
+    return f"; Eq. (11) of our S2 gives {value:.3g} {error} at this kD"
 
 
 #: zeros of the sphere form factor m(k) (k D) below k D = 20, and the distance from them
