@@ -7,6 +7,7 @@ itself: one self-contained file with every figure, table and caption."""
 from __future__ import annotations
 
 import json
+import math
 import re
 from pathlib import Path
 from types import SimpleNamespace
@@ -34,6 +35,9 @@ def test_read_benchmarks_matches_files_to_rules(tmp_path):
     for name, seconds in (("describe_mrj_points.tsv", 2.5), ("describe_chunk_mrj_points_chunk1.tsv", 4.0),
                           ("fig03.tsv", 0.5), ("stray.tsv", 9.0)):
         (folder / name).write_text(header + f"{seconds}\t0:00:0{int(seconds)}\t120.5\t900\t100\t110\t0\t1\t95\t{seconds}\n")
+    # a job first sampled after its process exited: Snakemake writes zeros (here the memory of a
+    # zombie); its measurements are NaN, its wall time is kept
+    (folder / "fig04.tsv").write_text(header + "0.5\t0:00:00\t0.00\t0.13\t0.00\t0.00\t0.00\t0.00\t0.00\t0.00\n")
     (folder / "notes.txt").write_text("not a benchmark")
     patterns = {"p_describe": "results/p/benchmarks/describe_{system,mrj|fcc}_{kind}.tsv",
                 "p_describe_chunk": "results/p/benchmarks/describe_chunk_{system}_{kind}_chunk{c,\\d+}.tsv",
@@ -41,7 +45,10 @@ def test_read_benchmarks_matches_files_to_rules(tmp_path):
     frame = report.read_benchmarks(patterns, root=tmp_path)
     assert tuple(frame.columns) == report.BENCHMARK_COLUMNS
     rows = {row["file"].rsplit("/", 1)[1]: row for row in frame.to_dict("records")}
-    assert set(rows) == {"describe_mrj_points.tsv", "describe_chunk_mrj_points_chunk1.tsv", "fig03.tsv"}
+    assert set(rows) == {"describe_mrj_points.tsv", "describe_chunk_mrj_points_chunk1.tsv", "fig03.tsv",
+                         "fig04.tsv"}
+    assert rows["fig04.tsv"]["s"] == 0.5
+    assert all(math.isnan(rows["fig04.tsv"][column]) for column in report.SAMPLED_COLUMNS)
     assert rows["describe_chunk_mrj_points_chunk1.tsv"]["rule"] == "p_describe_chunk"
     assert rows["describe_chunk_mrj_points_chunk1.tsv"]["wildcards"] == "system=mrj, kind=points, c=1"
     assert rows["describe_mrj_points.tsv"]["wildcards"] == "system=mrj, kind=points"
@@ -50,7 +57,7 @@ def test_read_benchmarks_matches_files_to_rules(tmp_path):
     assert list(summary["rule"]) == ["p_describe_chunk", "p_describe", "p_figure"]  # by total wall time
     assert summary.set_index("rule").loc["p_describe", "jobs"] == 1
     page = report.benchmark_page(frame, "p: run time", "results/p/benchmarks.csv")
-    assert "3 jobs" in page and "p_describe_chunk" in page
+    assert "4 jobs" in page and "p_describe_chunk" in page
     empty = report.read_benchmarks(patterns, root=tmp_path / "nothing")
     assert empty.empty and tuple(empty.columns) == report.BENCHMARK_COLUMNS
 
@@ -260,7 +267,11 @@ def test_report_of_the_quick_run(quick_run, tmp_path):
         files = sorted(p.relative_to(quick_run).as_posix()
                        for p in (quick_run / f"{QUICK_RESULTS}/{paper}/benchmarks").glob("*.tsv"))
         assert sorted(merged["file"]) == files and len(files) >= 10
-        assert (merged["s"] >= 0).all() and (merged["max_rss"] > 0).all()
+        # every job sampled at least once has a resident set; only a job of a few seconds can
+        # end before Snakemake's first sample (every 0.5 s in a job's first 30 s)
+        sampled = merged["max_rss"].notna()
+        assert (merged["s"] >= 0).all() and (merged.loc[sampled, "max_rss"] > 0).all()
+        assert (merged.loc[~sampled, "s"] < 5).all() and sampled.mean() > 0.5
         assert merged["rule"].str.contains(rf"^{paper}_fig|^{paper}_figure$").any()
         assert f"{QUICK_RESULTS}/{paper}/report/benchmarks.html" in results
 

@@ -29,6 +29,8 @@ __all__ = ["BENCHMARK_COLUMNS", "benchmark_page", "benchmark_summary", "comparis
 #: columns of the merged benchmark table (Snakemake's benchmark columns we keep, in order)
 BENCHMARK_COLUMNS = ("rule", "wildcards", "s", "cpu_time", "max_rss", "max_uss", "max_pss", "max_vms",
                      "io_in", "io_out", "mean_load", "file")
+#: the columns Snakemake measures by sampling the job's processes (:func:`read_benchmarks`)
+SAMPLED_COLUMNS = ("cpu_time", "max_rss", "max_uss", "max_pss", "max_vms", "io_in", "io_out", "mean_load")
 
 _STYLE = """
 body { font-family: system-ui, sans-serif; font-size: 13px; margin: 1em; color: #111; background: #fff; }
@@ -196,7 +198,13 @@ def read_benchmarks(patterns: Mapping[str, str], root=".") -> pd.DataFrame:
     (``patterns``: rule name -> pattern, relative to ``root``), one row per file: the rule, the
     job's wildcards (``name=value, ...``), Snakemake's measurements (:data:`BENCHMARK_COLUMNS`)
     and the file. A file matching several patterns goes to the pattern with the longest literal
-    part (the most specific)."""
+    part (the most specific).
+
+    Snakemake samples a job's processes (every 0.5 s in its first 30 s); a job that ends before
+    the first sample gets NA, and one first sampled after its process exited (a zombie) gets
+    zeros. A resident set of 0 is never a running process, so such a row's measurements of the
+    process (memory, I/O, load, CPU time) are NaN here -- not sampled -- and only its wall time
+    ``s`` is kept."""
     root = Path(root)
     compiled = sorted(((rule, _pattern_regex(pattern), pattern) for rule, pattern in patterns.items()),
                       key=lambda item: -len(re.sub(r"\{[^{}]*\}", "", item[2])))
@@ -218,6 +226,8 @@ def read_benchmarks(patterns: Mapping[str, str], root=".") -> pd.DataFrame:
                        "file": relative}
                 row.update({column: record.get(column, math.nan) for column in BENCHMARK_COLUMNS
                             if column not in row})
+                if pd.to_numeric(row["max_rss"], errors="coerce") == 0:  # sampled after it exited
+                    row.update({column: math.nan for column in SAMPLED_COLUMNS})
                 rows.append(row)
     frame = pd.DataFrame(rows, columns=list(BENCHMARK_COLUMNS))
     return frame.sort_values(["rule", "file"], kind="stable").reset_index(drop=True)
