@@ -247,12 +247,6 @@ def spectral_density_direct(kmag, S, rho: float, diameter: float = 1.0) -> np.nd
 # --------------------------------------------------------------------------- binning
 
 
-def _bin_index(kmag, edges):
-    """Bin index of each |k| in ``edges`` and the mask of those inside [edges[0], edges[-1])."""
-    index = np.searchsorted(edges, kmag, side="right") - 1
-    return index, (index >= 0) & (index < len(edges) - 1)
-
-
 def bin_means(kmag, values, edges):
     """Per-bin mean of ``values`` over the wavevectors with |k| in [edges[i], edges[i+1]).
 
@@ -273,7 +267,8 @@ def bin_means(kmag, values, edges):
         Per bin.
     """
     kmag, values, edges = (np.asarray(a, dtype=float) for a in (kmag, values, edges))
-    index, inside = _bin_index(kmag, edges)
+    index = np.searchsorted(edges, kmag, side="right") - 1
+    inside = (index >= 0) & (index < len(edges) - 1)
     nbins = len(edges) - 1
     count = np.bincount(index[inside], minlength=nbins).astype(float)
     total = np.bincount(index[inside], weights=values[inside], minlength=nbins)
@@ -305,13 +300,9 @@ def bin_sems(kmag, values, edges):
     ndarray, shape (n_bins,)
         Per bin.
     """
-    kmag, values, edges = (np.asarray(a, dtype=float) for a in (kmag, values, edges))
-    index, inside = _bin_index(kmag, edges)
-    nbins = len(edges) - 1
-    count = np.bincount(index[inside], minlength=nbins).astype(float)
-    squares = np.bincount(index[inside], weights=values[inside] ** 2, minlength=nbins)
+    mean_square, count, _ = bin_means(kmag, np.asarray(values, dtype=float) ** 2, edges)
     with np.errstate(invalid="ignore", divide="ignore"):
-        return np.sqrt(squares / 2.0) / count
+        return np.sqrt(mean_square / (2.0 * count))
 
 
 def centred_edges(centres, width: float):
