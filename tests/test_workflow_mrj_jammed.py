@@ -69,13 +69,14 @@ def test_packings_follow_the_contract_and_are_jammed(jammed_run, section):
 
 
 def test_a_system_polishes_with_its_own_solver(jammed_run, section):
-    """mrj_large's polish_solver (the paper config's, which the quick config keeps: HiPO, then
-    IPX + crossover in a final phase) reaches its packings, and only them; the test above
-    certifies them strictly jammed at the same contact gap."""
-    assert section["mrj_large"]["polish_solver"]["backend"] != section["polish"]["backend"]
+    """mrj_large's own polish keys (the paper config's, which the quick config keeps: HiPO, then
+    IPX + crossover in a final phase, a larger cap) reach its packings, and only them; the test
+    above certifies them strictly jammed at the same contact gap."""
+    assert section["mrj_large"]["polish"]["backend"] != section["polish"]["backend"]
+    assert section["mrj_large"]["polish"]["max_lps"] != section["polish"]["max_lps"]
     for system, k, path in packing_files(jammed_run, section):
         polish = json.loads(read_dataset(path).attrs["config_json"])["polish"]
-        assert polish == {**section["polish"], **section[system].get("polish_solver", {})}
+        assert polish == {**section["polish"], **section[system].get("polish", {})}
 
 
 def test_packings_table_matches_the_files(jammed_run, section):

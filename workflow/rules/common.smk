@@ -276,8 +276,8 @@ _PACKING_KEYS = ("route", "dilute", "compression", "inflation", "polish", "conta
 
 def mrj_polish(section, system):
     """The polish constants of ``system``'s packings: the shared ``polish`` of the config section
-    ``section`` (mrj2016.mrj) with the system's own ``polish_solver`` over it."""
-    return {**section["polish"], **section[system].get("polish_solver", {})}
+    ``section`` (mrj2016.mrj) with the system's own ``polish`` keys over it."""
+    return {**section["polish"], **section[system].get("polish", {})}
 
 
 # MRJ_JAMMED: defined in mrj2016_jammed.smk (read when the rule asks, after all includes)
