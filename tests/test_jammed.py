@@ -358,3 +358,31 @@ def test_summary_table_means_and_sems():
     assert mean["phi"] == pytest.approx(0.6315)
     assert sem["phi"] == pytest.approx(np.std([0.63, 0.631, 0.632, 0.633], ddof=1) / 2)
     assert ball_volume(0.5, 3) == pytest.approx(np.pi / 6)
+
+
+def test_rank_test_tells_a_floppy_mode_from_a_soft_rigid_one(monkeypatch):
+    """The rank part of the jamming test (lambda_min / lambda_max of B^T B, B: backbone contact
+    rows + volume row) on the kept quick packing (N = 100, rigid: 9e-8) and on the same matrix
+    with two backbone contacts removed, which leaves a motion with no contact and no volume
+    change (a floppy mode): that ratio must fall to round-off (measured 0 - 2e-19), below
+    mrj_large's rank tolerance 1e-15, which lies far below the rigid packing's ratio."""
+    import xarray as xr
+    from pathlib import Path
+
+    path = Path(__file__).parent / "data" / "mrj2016_quick_mrj_sample0.nc"
+    with xr.open_dataset(path) as ds:
+        positions, box = ds["position"].values, ds["box"].values
+        diameter = float(ds.attrs["diameter"])
+    seen = []
+    ratio = jamming._smallest_eigenvalue_ratio
+    monkeypatch.setattr(jamming, "_smallest_eigenvalue_ratio",
+                        lambda cone: seen.append(cone) or ratio(cone))
+    analysis = jamming.analyse(positions, box, diameter, gap_tolerance=1e-9)
+    cone = seen[0].tocsr()
+    assert analysis.jammed and analysis.rank_ratio > 1e-9
+    rng = np.random.default_rng(0)
+    volume_row = cone.shape[0] - 1
+    for _ in range(3):
+        removed = rng.choice(volume_row, 2, replace=False)
+        kept = np.r_[np.setdiff1d(np.arange(volume_row), removed), volume_row]
+        assert ratio(cone[kept]) < 1e-17 < 1e-15 < analysis.rank_ratio

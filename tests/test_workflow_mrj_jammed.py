@@ -69,14 +69,17 @@ def test_packings_follow_the_contract_and_are_jammed(jammed_run, section):
 
 
 def test_a_system_polishes_with_its_own_solver(jammed_run, section):
-    """mrj_large's own polish keys (the paper config's, which the quick config keeps: HiPO, then
-    IPX + crossover in a final phase, a larger cap) reach its packings, and only them; the test
-    above certifies them strictly jammed at the same contact gap."""
+    """mrj_large's own polish and contacts keys (the paper config's, which the quick config
+    keeps: HiPO, then IPX + crossover in a final phase, a larger cap; a lower rank tolerance)
+    reach its packings, and only them; the test above certifies them strictly jammed at the
+    same contact gap."""
     assert section["mrj_large"]["polish"]["backend"] != section["polish"]["backend"]
     assert section["mrj_large"]["polish"]["max_lps"] != section["polish"]["max_lps"]
+    assert section["mrj_large"]["contacts"]["rank_tolerance"] != section["contacts"]["rank_tolerance"]
     for system, k, path in packing_files(jammed_run, section):
-        polish = json.loads(read_dataset(path).attrs["config_json"])["polish"]
-        assert polish == {**section["polish"], **section[system].get("polish", {})}
+        made_with = json.loads(read_dataset(path).attrs["config_json"])
+        for stage in ("polish", "contacts"):
+            assert made_with[stage] == {**section[stage], **section[system].get(stage, {})}
 
 
 def test_packings_table_matches_the_files(jammed_run, section):

@@ -280,6 +280,12 @@ def mrj_polish(section, system):
     return {**section["polish"], **section[system].get("polish", {})}
 
 
+def mrj_contacts(section, system):
+    """The jamming-test constants of ``system``'s packings: the shared ``contacts`` of ``section``
+    with the system's own ``contacts`` keys over it."""
+    return {**section["contacts"], **section[system].get("contacts", {})}
+
+
 # MRJ_JAMMED: defined in mrj2016_jammed.smk (read when the rule asks, after all includes)
 def mrj_keep_dir(system):
     """record/packings/mrj2016 when this config makes the same packings of ``system`` as the paper
@@ -289,5 +295,6 @@ def mrj_keep_dir(system):
     same = (config["seed"] == _PAPER_CONFIG["seed"]
             and MRJ_JAMMED[system]["n_particles"] == paper[system]["n_particles"]
             and mrj_polish(MRJ_JAMMED, system) == mrj_polish(paper, system)
-            and all(MRJ_JAMMED[key] == paper[key] for key in _PACKING_KEYS if key != "polish"))
+            and mrj_contacts(MRJ_JAMMED, system) == mrj_contacts(paper, system)
+            and all(MRJ_JAMMED[key] == paper[key] for key in _PACKING_KEYS if key not in ("polish", "contacts")))
     return "record/packings/mrj2016" if same else results_path("record/packings/mrj2016")

@@ -44,7 +44,7 @@ rule mrj2016_jammed_packing:
         inflation=MRJ_JAMMED["inflation"] if MRJ_JAMMED["route"] == "compression" else {},
         dilute=MRJ_JAMMED["dilute"] if MRJ_JAMMED["route"] == "dilute" else {},
         polish=lambda wildcards: mrj_polish(MRJ_JAMMED, wildcards.system),
-        contacts=MRJ_JAMMED["contacts"],
+        contacts=lambda wildcards: mrj_contacts(MRJ_JAMMED, wildcards.system),
         bond_order_cutoff=MRJ_JAMMED["bond_order_cutoff"],
         checkpoint_seconds=MRJ_JAMMED["checkpoint_seconds"],
         seed=config["seed"],
@@ -59,8 +59,10 @@ rule mrj2016_jammed_packing:
         results_path("mrj2016/logs/jammed_{system}_sample{k}.log"),
     threads: 1
     resources:
-        # HiGHS IPX: ~2 GB for one LP of 16 000 spheres (measured)
-        mem_mb=lambda wildcards: 500 + MRJ_JAMMED[wildcards.system]["n_particles"] // 4,
+        # HiGHS IPX: ~2 GB for one LP of 16 000 spheres; the jamming test's sparse LU of B^T B:
+        # 1.7e8 nonzeros (~2.5 GB) at 10 000 spheres, scaled with N^1.5 (both measured)
+        mem_mb=lambda wildcards: int(500 + MRJ_JAMMED[wildcards.system]["n_particles"] / 4
+                                     + 2500 * (MRJ_JAMMED[wildcards.system]["n_particles"] / 10000) ** 1.5),
         # minutes, for cluster queues: 3x the median CPU of a paper-route packing at N = 2000
         # (MRJ_PACKING_CPU_SECONDS), scaled with N^2 (MRJ_PACKING_CPU_EXPONENT)
         runtime=lambda wildcards: max(30, int(3 * MRJ_PACKING_CPU_SECONDS / 60
@@ -79,7 +81,7 @@ rule mrj2016_packings:
     output:
         MRJ_PACKINGS_TABLE,
     params:
-        contacts=MRJ_JAMMED["contacts"],
+        contacts={system: mrj_contacts(MRJ_JAMMED, system) for system in ("mrj", "mrj_large")},
     benchmark:
         results_path("mrj2016/benchmarks/packings.tsv")
     log:

@@ -4,6 +4,8 @@ Besides the attributes the packing rule stored, each row has ``certified_gap_tol
 the smallest contact gap tolerance (configured value x 10^m, up to 1e-4 D) at which the
 packing passes the strict-jamming test (randmedia.describe.jamming_resolution).
 """
+from pathlib import Path
+
 from randmedia.jobs import start_job
 
 log = start_job(snakemake)
@@ -12,9 +14,10 @@ from randmedia.describe.jamming import PACKING_ATTRS, summary_table
 from randmedia.describe.jamming_resolution import certified_gap_tolerance
 from randmedia.io import read_dataset, write_csv
 
-contacts = dict(snakemake.params.contacts)
 records = []
 for path in snakemake.input.samples:
+    # the system's jamming-test constants (configs/{system}/sample{k}.nc)
+    contacts = dict(snakemake.params.contacts[Path(path).parent.name])
     dataset = read_dataset(path, attrs=PACKING_ATTRS + ("diameter",))
     # the packing rule stored the test at the configured tolerance (same contact options) as `jammed`
     if dataset.attrs["jammed"]:
