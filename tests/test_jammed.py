@@ -12,9 +12,11 @@ that bound, so the mean contact number of the non-rattlers is 2 M / N_b =
 from __future__ import annotations
 
 import itertools
+from pathlib import Path
 
 import numpy as np
 import pytest
+import xarray as xr
 
 from randmedia.describe import bond_order, jamming
 from randmedia.generate import jammed, packing_lp
@@ -366,9 +368,6 @@ def test_rank_test_tells_a_floppy_mode_from_a_soft_rigid_one(monkeypatch):
     with two backbone contacts removed, which leaves a motion with no contact and no volume
     change (a floppy mode): that ratio must fall to round-off (measured 0 - 2e-19), below
     mrj_large's rank tolerance 1e-15, which lies far below the rigid packing's ratio."""
-    import xarray as xr
-    from pathlib import Path
-
     path = Path(__file__).parent / "data" / "mrj2016_quick_mrj_sample0.nc"
     with xr.open_dataset(path) as ds:
         positions, box = ds["position"].values, ds["box"].values

@@ -274,16 +274,12 @@ def record_root(paper):
 _PACKING_KEYS = ("route", "dilute", "compression", "inflation", "polish", "contacts", "bond_order_cutoff")
 
 
-def mrj_polish(section, system):
-    """The polish constants of ``system``'s packings: the shared ``polish`` of the config section
-    ``section`` (mrj2016.mrj) with the system's own ``polish`` keys over it."""
-    return {**section["polish"], **section[system].get("polish", {})}
-
-
-def mrj_contacts(section, system):
-    """The jamming-test constants of ``system``'s packings: the shared ``contacts`` of ``section``
-    with the system's own ``contacts`` keys over it."""
-    return {**section["contacts"], **section[system].get("contacts", {})}
+def mrj_stage(section, system, key):
+    """``key`` of the config section ``section`` (mrj2016.mrj) as ``system``'s packings use it:
+    the shared value with the system's own keys of that name over it (mrj_large has its own
+    ``polish`` and ``contacts`` keys: workflow/schemas/mrj2016.jammed.schema.yaml)."""
+    own = section[system].get(key)
+    return {**section[key], **own} if own else section[key]
 
 
 # MRJ_JAMMED: defined in mrj2016_jammed.smk (read when the rule asks, after all includes)
@@ -294,7 +290,6 @@ def mrj_keep_dir(system):
     paper = _PAPER_CONFIG["mrj2016"]["mrj"]
     same = (config["seed"] == _PAPER_CONFIG["seed"]
             and MRJ_JAMMED[system]["n_particles"] == paper[system]["n_particles"]
-            and mrj_polish(MRJ_JAMMED, system) == mrj_polish(paper, system)
-            and mrj_contacts(MRJ_JAMMED, system) == mrj_contacts(paper, system)
-            and all(MRJ_JAMMED[key] == paper[key] for key in _PACKING_KEYS if key not in ("polish", "contacts")))
+            and all(mrj_stage(MRJ_JAMMED, system, key) == mrj_stage(paper, system, key)
+                    for key in _PACKING_KEYS))
     return "record/packings/mrj2016" if same else results_path("record/packings/mrj2016")

@@ -43,8 +43,8 @@ rule mrj2016_jammed_packing:
         compression=MRJ_JAMMED["compression"] if MRJ_JAMMED["route"] == "compression" else {},
         inflation=MRJ_JAMMED["inflation"] if MRJ_JAMMED["route"] == "compression" else {},
         dilute=MRJ_JAMMED["dilute"] if MRJ_JAMMED["route"] == "dilute" else {},
-        polish=lambda wildcards: mrj_polish(MRJ_JAMMED, wildcards.system),
-        contacts=lambda wildcards: mrj_contacts(MRJ_JAMMED, wildcards.system),
+        polish=lambda wildcards: mrj_stage(MRJ_JAMMED, wildcards.system, "polish"),
+        contacts=lambda wildcards: mrj_stage(MRJ_JAMMED, wildcards.system, "contacts"),
         bond_order_cutoff=MRJ_JAMMED["bond_order_cutoff"],
         checkpoint_seconds=MRJ_JAMMED["checkpoint_seconds"],
         seed=config["seed"],
@@ -81,7 +81,7 @@ rule mrj2016_packings:
     output:
         MRJ_PACKINGS_TABLE,
     params:
-        contacts={system: mrj_contacts(MRJ_JAMMED, system) for system in ("mrj", "mrj_large")},
+        contacts={system: mrj_stage(MRJ_JAMMED, system, "contacts") for system in ("mrj", "mrj_large")},
     benchmark:
         results_path("mrj2016/benchmarks/packings.tsv")
     log:
