@@ -181,8 +181,8 @@ def test_wildcard_constraints_are_on_the_rules(parsed, config):
     level_set = rules["debye2020_level_set"]["output"][0]
     assert "{system,media_phi0\\.1|" in level_set and "hard_disks_phi" in level_set
     for name in ("mrj2016_describe", "mrj2016_describe_chunk"):
-        assert "{system,overlapping|fcc|bcc|equilibrium|mrj|mrj_large}" in rules[name]["output"][0]
-    assert "{system,mrj|mrj_large}" in rules["mrj2016_jammed_packing"]["output"][0]
+        assert "{system,overlapping|fcc|bcc|equilibrium|mrj|mrj_large|mrj_md}" in rules[name]["output"][0]
+    assert "{system,mrj|mrj_large|mrj_md}" in rules["mrj2016_jammed_packing"]["output"][0]
 
 
 @pytest.mark.workflow

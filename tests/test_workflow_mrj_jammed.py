@@ -34,9 +34,12 @@ def section(jammed_run):
     return quick_config(jammed_run)["mrj2016"]["mrj"]
 
 
+SYSTEMS = ("mrj", "mrj_large", "mrj_md")
+
+
 def packing_files(workdir, section):
     return [(system, k, workdir / f"{QUICK_RESULTS}/mrj2016/configs/{system}/sample{k}.nc")
-            for system in ("mrj", "mrj_large") for k in range(section[system]["n_samples"])]
+            for system in SYSTEMS for k in range(section[system]["n_samples"])]
 
 
 def test_packings_follow_the_contract_and_are_jammed(jammed_run, section):
@@ -82,9 +85,29 @@ def test_a_system_polishes_with_its_own_solver(jammed_run, section):
             assert made_with[stage] == {**section[stage], **section[system].get(stage, {})}
 
 
+def test_md_like_packings_are_ls_compressions_at_their_own_rate(jammed_run, section):
+    """mrj_md (the MD packings of Ref. [29]) is made by the compression route with its own
+    constant growth rate over the shared compression keys, while the MRJ systems keep the
+    paper's dilute route and carry no compression keys; its packings pass the same jamming
+    test (test_packings_follow_the_contract_and_are_jammed)."""
+    own = section["mrj_md"]["compression"]
+    assert own["slowdown_pressure"] == own["target_pressure"]  # constant growth
+    assert section["route"] == "dilute" and section["mrj_md"]["route"] == "compression"
+    for system, k, path in packing_files(jammed_run, section):
+        attrs = read_dataset(path).attrs
+        made_with = json.loads(attrs["config_json"])
+        if system == "mrj_md":
+            assert made_with["route"] == "compression" and made_with["dilute"] == {}
+            assert made_with["compression"] == {**section["compression"], **own}
+            assert attrs["compression_growth_rate"] == own["growth_rate"]
+            assert attrs["compression_final_pressure"] >= own["target_pressure"]
+        else:
+            assert made_with["route"] == "dilute" and made_with["compression"] == {}
+
+
 def test_packings_table_matches_the_files(jammed_run, section):
     table = pd.read_csv(jammed_run / f"{QUICK_RESULTS}/mrj2016/packings.csv")
-    for system in ("mrj", "mrj_large"):
+    for system in SYSTEMS:
         rows = table[(table["system"] == system) & ~table["sample"].isin(["mean", "sem"])]
         assert len(rows) == section[system]["n_samples"]
         mean = table[(table["system"] == system) & (table["sample"] == "mean")].iloc[0]

@@ -286,15 +286,16 @@ def _mrj2016_equilibrium_checks(section: dict, config: dict) -> list[str]:
 def _mrj2016_jammed_checks(section: dict, config: dict) -> list[str]:
     """mrj2016.mrj (MRJ packings): the LP pair cutoffs and the TJ influence sphere must fit
     in the cell, the strain bounds must leave room for a translation bound, the final
-    displacement bound must not exceed the first, and the compression must slow down
-    before it stops."""
+    displacement bound must not exceed the first, and the compression must not stop before
+    it slows down (equal pressures: a constant growth rate, as mrj_md's)."""
     import math
 
     problems = []
     polish, lp = section["polish"], section["inflation"]
     reach = 1 + polish["influence_gap"]
     cutoff = 1 + 4 * math.sqrt(3) * lp["displacement_bound"]
-    for system in ("mrj", "mrj_large"):
+    systems = [key for key, value in section.items() if isinstance(value, dict) and "n_particles" in value]
+    for system in systems:
         n = section[system]["n_particles"]
         # half the side of a cubic cell at phi = 0.64, with 20 % margin for the cell's shear
         half_width = 0.8 * 0.5 * (n * math.pi / 6 / 0.64) ** (1 / 3)
@@ -317,12 +318,14 @@ def _mrj2016_jammed_checks(section: dict, config: dict) -> list[str]:
             "config key 'mrj2016.mrj.inflation.final_displacement_bound': "
             f"{lp['final_displacement_bound']:g} must not exceed displacement_bound "
             f"{lp['displacement_bound']:g}")
-    compression = section["compression"]
-    if compression["target_pressure"] <= compression["slowdown_pressure"]:
-        problems.append(
-            "config key 'mrj2016.mrj.compression.target_pressure': "
-            f"{compression['target_pressure']:g} must exceed slowdown_pressure "
-            f"{compression['slowdown_pressure']:g}")
+    for where, own in [("", {})] + [(f"{system}.", section[system].get("compression", {}))
+                                     for system in systems]:
+        compression = {**section["compression"], **own}  # a system's own keys over the shared ones
+        if (own or not where) and compression["target_pressure"] < compression["slowdown_pressure"]:
+            problems.append(
+                f"config key 'mrj2016.mrj.{where}compression.target_pressure': "
+                f"{compression['target_pressure']:g} must not be below slowdown_pressure "
+                f"{compression['slowdown_pressure']:g}")
     return problems
 
 

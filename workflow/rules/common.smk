@@ -277,9 +277,23 @@ _PACKING_KEYS = ("route", "dilute", "compression", "inflation", "polish", "conta
 def mrj_stage(section, system, key):
     """``key`` of the config section ``section`` (mrj2016.mrj) as ``system``'s packings use it:
     the shared value with the system's own keys of that name over it (mrj_large has its own
-    ``polish`` and ``contacts`` keys: workflow/schemas/mrj2016.jammed.schema.yaml)."""
+    ``polish`` and ``contacts`` keys, mrj_md its own ``route`` and ``compression``:
+    workflow/schemas/mrj2016.jammed.schema.yaml)."""
     own = section[system].get(key)
-    return {**section[key], **own} if own else section[key]
+    if isinstance(own, dict):
+        return {**section[key], **own}
+    return section[key] if own is None else own
+
+
+#: the stages each route runs (randmedia.generate.mrj): a packing's params hold only these, so a
+#: change of another route's constants reruns nothing
+_ROUTE_STAGES = {"compression": ("compression", "inflation"), "dilute": ("dilute",)}
+
+
+def mrj_route_stage(section, system, key):
+    """``system``'s ``key`` stage (mrj_stage) if its route runs that stage, {} otherwise."""
+    return (mrj_stage(section, system, key)
+            if key in _ROUTE_STAGES[mrj_stage(section, system, "route")] else {})
 
 
 # MRJ_JAMMED: defined in mrj2016_jammed.smk (read when the rule asks, after all includes)

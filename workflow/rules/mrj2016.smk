@@ -3,7 +3,8 @@
 #
 #   generate  overlapping spheres, fcc / bcc lattices (here); the equilibrium liquid
 #             (hard_particles.smk: EQUILIBRIUM_SAMPLES) and the MRJ packings
-#             (mrj2016_jammed.smk: MRJ_SAMPLES, MRJ_LARGE_SAMPLES), included before.
+#             (mrj2016_jammed.smk: MRJ_SAMPLES, MRJ_LARGE_SAMPLES) and the MD-like packings
+#             of Ref. [29] (MRJ_MD_SAMPLES), included before.
 #   describe  per chunk of samples: correlation (Appendix A), spectral (Sec. IV),
 #             points (pore sizes, E_V, covering radius; Sec. V), windows (number
 #             variance, f_R(N); Sec. VI); then one merged file per system and kind.
@@ -50,7 +51,7 @@ M_SAMPLES = {
     "bcc": [M_CONFIG.format(system="bcc", k=k) for k in range(M_LATTICES["n_samples"])],
 }
 for _system, _samples in (("equilibrium", EQUILIBRIUM_SAMPLES), ("mrj", MRJ_SAMPLES),
-                          ("mrj_large", MRJ_LARGE_SAMPLES)):
+                          ("mrj_large", MRJ_LARGE_SAMPLES), ("mrj_md", MRJ_MD_SAMPLES)):
     if len(_samples) > 0:  # a config may set a system's sample count to 0 to leave it out
         M_SAMPLES[_system] = list(_samples)
 
@@ -58,13 +59,13 @@ for _system, _samples in (("equilibrium", EQUILIBRIUM_SAMPLES), ("mrj", MRJ_SAMP
 M_KINDS = {
     "correlation": ["equilibrium", "mrj", "mrj_large"],
     "spectral": ["overlapping", "equilibrium", "mrj", "mrj_large", "fcc", "bcc"],
-    "points": ["overlapping", "equilibrium", "mrj", "fcc", "bcc"],
+    "points": ["overlapping", "equilibrium", "mrj", "mrj_md", "fcc", "bcc"],
     "windows": ["overlapping", "equilibrium", "mrj"],
 }
 
 
 #: {system} and {kind} of the describe rules (constrained on those rules, not globally)
-M_SYSTEM_CONSTRAINT = "|".join(["overlapping", "fcc", "bcc", "equilibrium", "mrj", "mrj_large"])
+M_SYSTEM_CONSTRAINT = "|".join(["overlapping", "fcc", "bcc", "equilibrium", *MRJ_JAMMED_SYSTEMS])
 M_KIND_CONSTRAINT = "|".join(M_KINDS)
 
 
@@ -176,8 +177,8 @@ MRJ2016_FIGURE_INPUTS = {
     6: m_inputs([("spectral", "equilibrium"), ("correlation", "equilibrium")]
                 + ([("spectral", "mrj_large"), ("correlation", "mrj_large")] if m_have("mrj_large")
                    else [("spectral", "mrj"), ("correlation", "mrj")])),
-    7: m_inputs([("points", s) for s in ("overlapping", "equilibrium", "mrj", "fcc", "bcc")]),
-    8: m_inputs([("points", s) for s in ("overlapping", "equilibrium", "mrj", "fcc", "bcc")]),
+    7: m_inputs([("points", s) for s in M_KINDS["points"]]),
+    8: m_inputs([("points", s) for s in M_KINDS["points"]]),
     9: m_inputs([("windows", s) for s in ("overlapping", "equilibrium", "mrj")]),
     10: m_inputs([("windows", s) for s in ("overlapping", "equilibrium", "mrj")]),
     11: {},

@@ -1,12 +1,15 @@
-# Klatt & Torquato, PRE 94, 022152 (2016): strictly jammed MRJ packings (systems `mrj`
-# and `mrj_large`): Lubachevsky-Stillinger compression, inflation LPs in the fixed cell,
-# Torquato-Jiao LPs in a deformable cell (randmedia.generate.mrj).
+# Klatt & Torquato, PRE 94, 022152 (2016): strictly jammed sphere packings -- the MRJ systems
+# `mrj` and `mrj_large` by the paper's route (Torquato-Jiao LPs from a dilute start), the
+# MD-like system `mrj_md` (the packings of the paper's Ref. [29]) by a Lubachevsky-Stillinger
+# compression, inflation LPs in the fixed cell and the same Torquato-Jiao polish
+# (randmedia.generate.mrj).
 # Included before mrj2016.smk.
 #
 # Python names other rule files use:
 #   MRJ_JAMMED         the config section mrj2016.mrj
 #   MRJ_SAMPLES        every results/mrj2016/configs/mrj/sample{k}.nc
 #   MRJ_LARGE_SAMPLES  every results/mrj2016/configs/mrj_large/sample{k}.nc
+#   MRJ_MD_SAMPLES     every results/mrj2016/configs/mrj_md/sample{k}.nc
 #   JAMMED_TARGETS     packings.csv (phi, z, rattler fraction, Q6 per packing; mean, SEM)
 
 MRJ_JAMMED = config["mrj2016"]["mrj"]
@@ -22,6 +25,9 @@ MRJ_PACKING_CPU_EXPONENT = 2.0
 MRJ_SAMPLES = expand(MRJ_PACKING, system="mrj", k=range(MRJ_JAMMED["mrj"]["n_samples"]))
 MRJ_LARGE_SAMPLES = expand(MRJ_PACKING, system="mrj_large",
                            k=range(MRJ_JAMMED["mrj_large"]["n_samples"]))
+MRJ_MD_SAMPLES = expand(MRJ_PACKING, system="mrj_md", k=range(MRJ_JAMMED["mrj_md"]["n_samples"]))
+#: the jammed systems of the section mrj2016.mrj
+MRJ_JAMMED_SYSTEMS = ("mrj", "mrj_large", "mrj_md")
 MRJ_PACKINGS_TABLE = results_path("mrj2016/packings.csv")
 JAMMED_TARGETS = [MRJ_PACKINGS_TABLE]
 
@@ -34,15 +40,15 @@ rule mrj2016_jammed_packing:
     output:
         MRJ_PACKING,
     wildcard_constraints:
-        system="mrj|mrj_large",
+        system="|".join(MRJ_JAMMED_SYSTEMS),
     params:
         n_particles=lambda wildcards: MRJ_JAMMED[wildcards.system]["n_particles"],
         # only the stages of the configured route, so a change of the other route's
         # constants reruns nothing
-        route=MRJ_JAMMED["route"],
-        compression=MRJ_JAMMED["compression"] if MRJ_JAMMED["route"] == "compression" else {},
-        inflation=MRJ_JAMMED["inflation"] if MRJ_JAMMED["route"] == "compression" else {},
-        dilute=MRJ_JAMMED["dilute"] if MRJ_JAMMED["route"] == "dilute" else {},
+        route=lambda wildcards: mrj_stage(MRJ_JAMMED, wildcards.system, "route"),
+        compression=lambda wildcards: mrj_route_stage(MRJ_JAMMED, wildcards.system, "compression"),
+        inflation=lambda wildcards: mrj_route_stage(MRJ_JAMMED, wildcards.system, "inflation"),
+        dilute=lambda wildcards: mrj_route_stage(MRJ_JAMMED, wildcards.system, "dilute"),
         polish=lambda wildcards: mrj_stage(MRJ_JAMMED, wildcards.system, "polish"),
         contacts=lambda wildcards: mrj_stage(MRJ_JAMMED, wildcards.system, "contacts"),
         bond_order_cutoff=MRJ_JAMMED["bond_order_cutoff"],
@@ -76,12 +82,12 @@ rule mrj2016_packings:
     jamming test, certified gap tolerance and cost of every packing, with mean and SEM per
     system."""
     input:
-        samples=MRJ_SAMPLES + MRJ_LARGE_SAMPLES,
+        samples=MRJ_SAMPLES + MRJ_LARGE_SAMPLES + MRJ_MD_SAMPLES,
         code=script_sources("../scripts/mrj2016/jammed_packings.py"),
     output:
         MRJ_PACKINGS_TABLE,
     params:
-        contacts={system: mrj_stage(MRJ_JAMMED, system, "contacts") for system in ("mrj", "mrj_large")},
+        contacts={system: mrj_stage(MRJ_JAMMED, system, "contacts") for system in MRJ_JAMMED_SYSTEMS},
     benchmark:
         results_path("mrj2016/benchmarks/packings.tsv")
     log:

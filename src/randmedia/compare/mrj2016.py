@@ -214,7 +214,7 @@ def table_summary(inputs, params) -> pd.DataFrame:
     """Table I: the characteristics of Table I with our value per system (mean and SEM)."""
     from randmedia.theory.overlapping import specific_surface
 
-    systems = ["overlapping", "equilibrium", "mrj", "mrj_large", "fcc", "bcc"]
+    systems = ["overlapping", "equilibrium", "mrj", "mrj_large", "mrj_md", "fcc", "bcc"]
     rows = []
 
     def add(index, system, value, sem=math.nan, note=""):
@@ -527,7 +527,14 @@ def _quoted_rows(rows: Rows, reference_path, inputs, params):
             mean, sem = (_mean_sem(ds["eta"].values) if ds is not None
                          else (lattice_packing_fraction(system), 0.0))
         elif quantity == "md_packing_fraction":
-            reason = "not reproduced: the MD packings of Ref. [29] are not generated here"
+            # system mrj_md: LS (event-driven MD) compressions, strictly jammed by the same LPs;
+            # its growth rate is the decade (0.1, 0.01, 0.001) whose packings end nearest Ref.
+            # [29]'s phi, so this row checks that choice, not an independent prediction
+            pts = get("points", "mrj_md")
+            if pts is not None:
+                mean, sem = _mean_sem(pts["eta"].values)
+            reason = ("not reproduced: no mrj_md packings in this configuration" if pts is None else
+                      "our LS growth rate (a decade grid) does not land on Ref. [29]'s phi")
         elif quantity == "packings_analyzed":
             target = {"mrj_N2000": "mrj", "equilibrium_N10000": "equilibrium",
                       "mrj_N10000_spectral": "mrj_large"}[system]

@@ -21,9 +21,12 @@ from randmedia.io import read_dataset
 from randmedia.plot.style import COLUMN_WIDTH, band, figure, legend_below
 
 COLOURS = {"overlapping": "0.25", "equilibrium": "C0", "mrj": "C3", "mrj_large": "C3",
-           "fcc": "C2", "bcc": "C4"}
+           "mrj_md": "C1", "fcc": "C2", "bcc": "C4"}
 LABELS = {"overlapping": "overlapping spheres", "equilibrium": "equilibrium liquid",
-          "mrj": "MRJ packings", "mrj_large": "MRJ packings", "fcc": "fcc", "bcc": "bcc"}
+          "mrj": "MRJ packings", "mrj_large": "MRJ packings",
+          "mrj_md": "MD-like packings (LS; cf. Ref. [29])", "fcc": "fcc", "bcc": "bcc"}
+#: the systems of Figs. 7 and 8 (the paper's: TJ and MD packings of Ref. [29], liquid, lattices)
+POINT_SYSTEMS = ("overlapping", "equilibrium", "mrj", "mrj_md", "fcc", "bcc")
 RADIUS = 0.5  # sphere radius in units of D
 
 
@@ -327,7 +330,7 @@ def fig07(inputs, settings, log):
     Parameters
     ----------
     inputs : dict
-        ``points_{system}`` for overlapping, equilibrium, mrj, fcc, bcc (optional).
+        ``points_{system}`` for the systems of POINT_SYSTEMS (each optional).
     settings : dict
         ``overlapping_phi``: sphere volume fraction of the overlapping spheres (exact curves).
     log : logging.Logger
@@ -346,7 +349,7 @@ def fig07(inputs, settings, log):
     ax.plot(delta, pore_size_complementary_cdf(delta, RADIUS, phi_over, 3), color=COLOURS["overlapping"],
             lw=0.9, label="overlapping (exact)")
     mrj = None
-    for system in ("overlapping", "equilibrium", "mrj", "fcc", "bcc"):
+    for system in POINT_SYSTEMS:
         ds = _load(inputs, f"points_{system}", log)
         if ds is None:
             continue
@@ -399,7 +402,7 @@ def fig08(inputs, settings, log):
     Parameters
     ----------
     inputs : dict
-        ``points_{system}`` for overlapping, equilibrium, mrj, fcc, bcc (optional).
+        ``points_{system}`` for the systems of POINT_SYSTEMS (each optional).
     settings : dict
         ``overlapping_phi``: sphere volume fraction of the overlapping spheres (their density).
     log : logging.Logger
@@ -417,7 +420,7 @@ def fig08(inputs, settings, log):
     x = np.linspace(0, 1.6, 400)
     ax.plot(x, exclusion_probability(x, 1.0, 3), color=COLOURS["overlapping"], lw=0.9,
             label="Poisson (exact)")
-    for system in ("overlapping", "equilibrium", "mrj", "fcc", "bcc"):
+    for system in POINT_SYSTEMS:
         ds = _load(inputs, f"points_{system}", log)
         if ds is None:
             continue
