@@ -37,11 +37,12 @@ def test_a_kept_packing_is_certified_and_made_with_the_paper_config(path):
     assert float(ds.attrs["gap_tolerance"]) == SECTION["contacts"]["gap_tolerance"]
     assert int(ds.attrs["isostatic_excess"]) == 0
     made_with = json.loads(ds.attrs["config_json"])
-    route = SECTION["route"]
-    assert made_with["route"] == route
     system = SECTION[path.parent.name]
-    for stage in ("polish", "contacts", "dilute" if route == "dilute" else "compression"):
-        # a system's own polish and contacts keys over the shared ones (workflow/rules/common.smk)
+    route = system.get("route", SECTION["route"])  # mrj_md's own route (workflow/rules/common.smk)
+    assert made_with["route"] == route
+    route_stages = ("dilute",) if route == "dilute" else ("compression", "inflation")
+    for stage in ("polish", "contacts") + route_stages:
+        # a system's own stage keys over the shared ones (workflow/rules/common.smk)
         wanted = {**SECTION[stage], **system.get(stage, {})}
         assert made_with[stage] == wanted, f"{path}: {stage} differs from config/config.yaml"
     assert np.isfinite(positions).all()
