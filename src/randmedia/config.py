@@ -318,10 +318,12 @@ def _mrj2016_jammed_checks(section: dict, config: dict) -> list[str]:
             "config key 'mrj2016.mrj.inflation.final_displacement_bound': "
             f"{lp['final_displacement_bound']:g} must not exceed displacement_bound "
             f"{lp['displacement_bound']:g}")
-    for where, own in [("", {})] + [(f"{system}.", section[system].get("compression", {}))
-                                     for system in systems]:
-        compression = {**section["compression"], **own}  # a system's own keys over the shared ones
-        if (own or not where) and compression["target_pressure"] < compression["slowdown_pressure"]:
+    # the shared compression, and each system's own keys over it (mrj_md)
+    compressions = [("", section["compression"])] + [
+        (f"{system}.", {**section["compression"], **section[system]["compression"]})
+        for system in systems if "compression" in section[system]]
+    for where, compression in compressions:
+        if compression["target_pressure"] < compression["slowdown_pressure"]:
             problems.append(
                 f"config key 'mrj2016.mrj.{where}compression.target_pressure': "
                 f"{compression['target_pressure']:g} must not be below slowdown_pressure "
