@@ -12,6 +12,7 @@ import numpy as np
 import pytest
 import yaml
 
+from randmedia.config import MRJ_ROUTE_STAGES
 from randmedia.generate import PARTICLE_CONFIG, particle_config_dataset
 from randmedia.generate.jammed import packing_fraction
 from randmedia.io import read_dataset
@@ -40,8 +41,7 @@ def test_a_kept_packing_is_certified_and_made_with_the_paper_config(path):
     system = SECTION[path.parent.name]
     route = system.get("route", SECTION["route"])  # mrj_md's own route (workflow/rules/common.smk)
     assert made_with["route"] == route
-    route_stages = ("dilute",) if route == "dilute" else ("compression", "inflation")
-    for stage in ("polish", "contacts") + route_stages:
+    for stage in ("polish", "contacts") + MRJ_ROUTE_STAGES[route]:
         # a system's own stage keys over the shared ones (workflow/rules/common.smk)
         wanted = {**SECTION[stage], **system.get(stage, {})}
         assert made_with[stage] == wanted, f"{path}: {stage} differs from config/config.yaml"

@@ -283,6 +283,13 @@ def _mrj2016_equilibrium_checks(section: dict, config: dict) -> list[str]:
     return problems
 
 
+#: the config sections of mrj2016.mrj that each route of :mod:`randmedia.generate.mrj` runs before
+#: the polish (its ``route`` key): the one home of this map for the generator (which records only
+#: these stages' constants), the workflow (a packing's params hold only these, so a change of
+#: another route's constants reruns nothing) and the tests of the kept packings
+MRJ_ROUTE_STAGES = {"compression": ("compression", "inflation"), "dilute": ("dilute",)}
+
+
 def _mrj2016_jammed_checks(section: dict, config: dict) -> list[str]:
     """mrj2016.mrj (MRJ packings): the LP pair cutoffs and the TJ influence sphere must fit
     in the cell, the strain bounds must leave room for a translation bound, the final

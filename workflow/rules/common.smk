@@ -252,7 +252,7 @@ def sphere_descriptors(systems):
 
 # --------------------------------------------------------------------------- record (record.smk)
 
-from randmedia.config import load_config as _load_config, validate_config
+from randmedia.config import MRJ_ROUTE_STAGES, load_config as _load_config, validate_config
 from randmedia.record import paper_config as _paper_config
 
 #: the paper-fidelity configuration (config/config.yaml alone, defaults filled in)
@@ -285,15 +285,11 @@ def mrj_stage(section, system, key):
     return section[key] if own is None else own
 
 
-#: the stages each route runs (randmedia.generate.mrj): a packing's params hold only these, so a
-#: change of another route's constants reruns nothing
-_ROUTE_STAGES = {"compression": ("compression", "inflation"), "dilute": ("dilute",)}
-
-
 def mrj_route_stage(section, system, key):
-    """``system``'s ``key`` stage (mrj_stage) if its route runs that stage, {} otherwise."""
+    """``system``'s ``key`` stage (mrj_stage) if its route runs that stage (randmedia.config's
+    MRJ_ROUTE_STAGES: a packing's params hold only these), {} otherwise."""
     return (mrj_stage(section, system, key)
-            if key in _ROUTE_STAGES[mrj_stage(section, system, "route")] else {})
+            if key in MRJ_ROUTE_STAGES[mrj_stage(section, system, "route")] else {})
 
 
 # MRJ_JAMMED: defined in mrj2016_jammed.smk (read when the rule asks, after all includes)

@@ -44,6 +44,7 @@ from pathlib import Path
 import numpy as np
 
 from randmedia.checkpoint import checkpoint_key
+from randmedia.config import MRJ_ROUTE_STAGES
 from randmedia.generate import inflation, packing_lp
 from randmedia.generate.jammed import (ConstructionError, JammedPacking, TJParameters, jam,
                                        packing_fraction, tj_lp_history, validate_packing_input)
@@ -93,7 +94,7 @@ class DiluteTJ:
 
 #: the routes to a packing: "compression" (LS, inflation LPs, polish; module docstring) and
 #: "dilute" (:class:`DiluteTJ`, then the same polish)
-ROUTES = ("compression", "dilute")
+ROUTES = tuple(MRJ_ROUTE_STAGES)
 
 
 @dataclass(frozen=True)
@@ -123,13 +124,12 @@ class MRJProtocol:
                    dilute=DiluteTJ(**section.get("dilute", {})))
 
     def as_dict(self) -> dict:
-        """The constants of the stages the route runs (the route itself only for "dilute", so
-        the compression route's checkpoints and attributes stay as they were)."""
-        if self.route == "dilute":
-            return {"route": {"name": self.route}, "dilute": asdict(self.dilute),
-                    "polish": asdict(self.polish)}
-        return {"compression": asdict(self.compression), "inflation": asdict(self.inflation),
-                "polish": asdict(self.polish)}
+        """The constants of the stages the route runs (``MRJ_ROUTE_STAGES``) and the polish's;
+        the route itself only for "dilute", so the compression route's checkpoints and
+        attributes stay as they were."""
+        stages = {stage: asdict(getattr(self, stage)) for stage in MRJ_ROUTE_STAGES[self.route]}
+        route = {"route": {"name": self.route}} if self.route == "dilute" else {}
+        return {**route, **stages, "polish": asdict(self.polish)}
 
 
 @dataclass
