@@ -343,6 +343,34 @@ def test_warm_started_dual_simplex_reaches_the_cold_optimum_in_fewer_iterations(
     assert jammed.tj_step(moved, moved_box, jammed.TJParameters())[2]["basis"] is None
 
 
+def test_a_failed_lp_is_solved_by_the_fallback_and_logged(packing3d, monkeypatch, caplog):
+    """A backend failure on a feasible LP (seen once with HiPO at N = 10 000) is not fatal:
+    packing_lp.fallback's backend solves the same LP, to the same optimum, and the
+    construction's log names the failure (the retry can cost ~30x the LP)."""
+    positions, box = packing3d.positions * 1.01, packing3d.box * 1.01
+    params = jammed.TJParameters(max_lps=1)
+    clean = jammed.tj_step(positions, box, params)[2]
+    assert clean["fallback"] == ""
+    real_solve, calls = packing_lp.solve, []
+
+    def hipo_fails(*args, backend, **options):
+        calls.append(backend)
+        if backend == "highs-hipo":
+            raise packing_lp.LPError("LP not solved to optimality (highs-hipo): Unknown")
+        return real_solve(*args, backend=backend, **options)
+
+    monkeypatch.setattr(packing_lp, "solve", hipo_fails)
+    record = jammed.tj_step(positions, box, params)[2]
+    assert calls == ["highs-hipo", "highs-ipm"]
+    assert clean["basis"] is None and record["basis"] is not None  # the fallback's vertex
+    assert record["fallback"] == ("LP not solved to optimality (highs-hipo): Unknown; "
+                                  "solved by highs-ipm")
+    assert record["trace"] == pytest.approx(clean["trace"], abs=1e-10)
+    with caplog.at_level("WARNING"), pytest.raises(jammed.ConstructionError, match="max_lps"):
+        jammed.jam(positions, box, params)
+    assert "LP 1: LP not solved to optimality (highs-hipo)" in caplog.text
+
+
 def test_unconverged_construction_raises():
     start, box = random_sequential_addition(np.random.default_rng(0), 50, 0.25)
     with pytest.raises(jammed.ConstructionError, match="max_lps"):

@@ -166,14 +166,10 @@ def inflation_step(positions: np.ndarray, box: np.ndarray, bound: float, *,
     lower[-1], upper[-1] = 0.0, (1.0 + 2.0 * math.sqrt(dim) * bound) ** 2
     rhs = -distance / 2.0
     build = time.perf_counter() - tic
-    try:
-        solution = packing_lp.solve(cost, matrix, rhs, lower, upper, backend=backend,
-                                    threads=threads, sense="max")
-    except packing_lp.LPError:
-        # s = 0, Gamma = (closest distance / D)^2 is feasible: a solver failure, not an
-        # infeasible LP; the dual simplex decides
-        solution = packing_lp.solve(cost, matrix, rhs, lower, upper, backend=packing_lp.fallback(backend),
-                                    threads=threads, sense="max")
+    # s = 0, Gamma = (closest distance / D)^2 is feasible: a failure is the solver's, not an
+    # infeasible LP, and packing_lp.fallback decides
+    solution = packing_lp.solve_or_fallback(cost, matrix, rhs, lower, upper, backend=backend,
+                                            threads=threads, sense="max")
     moves = solution.x[:-1].reshape(n, dim)
     gamma = float(solution.x[-1])
     forces = solution.row_dual
@@ -204,6 +200,7 @@ def inflation_step(positions: np.ndarray, box: np.ndarray, bound: float, *,
         "crossover_iterations": solution.crossover_iterations,
         "simplex_iterations": solution.simplex_iterations,
         "bound": bound,
+        "fallback": solution.fallback_reason,
     }
     return new_positions, new_box, record
 

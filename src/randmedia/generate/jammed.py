@@ -482,14 +482,10 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
     build = time.perf_counter() - tic
     # the LP's clocks include an abandoned first attempt (a warm start past its iteration limit)
     lp_wall, lp_cpu = time.perf_counter(), time.process_time()
-    try:
-        solution = packing_lp.solve(cost, matrix, bound, -upper, upper, backend=params.backend,
-                                    threads=threads, start_basis=start_basis)
-    except packing_lp.LPError:
-        # x = 0 is feasible, so this is a numerical failure of the solver (seen with IPX at
-        # tiny trust factors) or a warm start past its limit: packing_lp.fallback decides
-        solution = packing_lp.solve(cost, matrix, bound, -upper, upper, backend=packing_lp.fallback(params.backend),
-                                    threads=threads)
+    # x = 0 is feasible: a failure is numerical (seen with IPX at tiny trust factors, and once
+    # with HiPO at N = 10 000) or a warm start past its limit, and packing_lp.fallback decides
+    solution = packing_lp.solve_or_fallback(cost, matrix, bound, -upper, upper, backend=params.backend,
+                                            threads=threads, start_basis=start_basis)
     lp_wall, lp_cpu = time.perf_counter() - lp_wall, time.process_time() - lp_cpu
     deformation = np.eye(dim) + packing_lp.strain_matrix(solution.x[:ns], dim)
     moved = (positions + solution.x[ns:].reshape(n, dim)) @ deformation.T
@@ -508,6 +504,7 @@ def tj_step(positions: np.ndarray, box: np.ndarray, params: TJParameters, diamet
               "ipm_iterations": solution.ipm_iterations,
               "crossover_iterations": solution.crossover_iterations,
               "simplex_iterations": solution.simplex_iterations,
+              "fallback": solution.fallback_reason,
               "basis": None if solution.col_status is None else
               packing_lp.LPBasis(solution.col_status, solution.row_status, row_keys)}
     return moved, new_box, record
@@ -650,6 +647,8 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         new_positions, new_box, record = tj_step(positions, box, step_params, diameter, threads, trust,
                                                  start_volume, basis)
         basis = record.pop("basis")
+        if record["fallback"]:
+            log.warning("LP %d: %s", len(history["phi"]) + 1, record["fallback"])
         record["final"] = int(final)
         phi_new = packing_fraction(new_positions, new_box, diameter)
         if -record["trace"] <= params.tolerance and trust == 1.0:

@@ -257,6 +257,8 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
         positions, box, record = inflation.inflation_step(positions, box, bound,
                                                           backend=params.backend, threads=threads)
         record["phi"] = packing_fraction(positions, box)
+        if record["fallback"]:
+            log.warning("inflation LP %d: %s", len(history["phi"]) + 1, record["fallback"])
         for name in INFLATION_HISTORY:
             history[name].append(record[name])
         reason = inflation.stop_reason(history["inflation"], history["phi"], params)

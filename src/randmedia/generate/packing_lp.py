@@ -54,7 +54,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 from types import MappingProxyType
 
 import numpy as np
@@ -228,6 +228,9 @@ class LPSolution:
     #: 0 lower, 1 basic, 2 upper, 3 zero, 4 nonbasic); None without a basis
     col_status: np.ndarray | None = None
     row_status: np.ndarray | None = None
+    #: why ``backend`` failed when :func:`solve_or_fallback` solved the LP with
+    #: :func:`fallback` instead ("" when it did not)
+    fallback_reason: str = ""
 
 
 @dataclass(frozen=True)
@@ -266,6 +269,24 @@ def fallback(backend: str) -> str:
     numerical failure, or a warm-started dual simplex past :func:`warm_iteration_limit`):
     IPX + crossover after HiPO and the dual simplex, the dual simplex after anything else."""
     return "highs-ipm" if backend.startswith("highs-hipo") or backend in WARM_BACKENDS else "highs-simplex"
+
+
+def solve_or_fallback(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarray,
+                      col_lower: np.ndarray, col_upper: np.ndarray, *, backend: str,
+                      **options) -> LPSolution:
+    """:func:`solve` for an LP known to be feasible (x = 0 is, in every packing LP): when
+    ``backend`` fails (:class:`LPError`: a numerical failure, or a warm start past its limit),
+    the LP is solved again by :func:`fallback` (``backend``), and the solution's
+    ``fallback_reason`` says why -- the caller logs it, since the retry can cost far more (IPX +
+    crossover: ~20 min at N = 10 000 where HiPO takes ~40 s). ``options``: those of
+    :func:`solve` (a ``start_basis`` is given to the first attempt only)."""
+    try:
+        return solve(cost, matrix, row_lower, col_lower, col_upper, backend=backend, **options)
+    except LPError as error:
+        options.pop("start_basis", None)
+        solution = solve(cost, matrix, row_lower, col_lower, col_upper, backend=fallback(backend),
+                         **options)
+        return replace(solution, fallback_reason=f"{error}; solved by {fallback(backend)}")
 
 
 def warm_iteration_limit(n_rows: int) -> int:
