@@ -284,9 +284,9 @@ def solve_or_fallback(cost: np.ndarray, matrix: sp.spmatrix, row_lower: np.ndarr
         return solve(cost, matrix, row_lower, col_lower, col_upper, backend=backend, **options)
     except LPError as error:
         options.pop("start_basis", None)
-        solution = solve(cost, matrix, row_lower, col_lower, col_upper, backend=fallback(backend),
-                         **options)
-        return replace(solution, fallback_reason=f"{error}; solved by {fallback(backend)}")
+        second = fallback(backend)
+        solution = solve(cost, matrix, row_lower, col_lower, col_upper, backend=second, **options)
+        return replace(solution, fallback_reason=f"{error}; solved by {second}")
 
 
 def warm_iteration_limit(n_rows: int) -> int:
