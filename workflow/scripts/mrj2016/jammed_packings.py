@@ -2,7 +2,10 @@
 
 Besides the attributes the packing rule stored, each row has ``certified_gap_tolerance``:
 the smallest contact gap tolerance (configured value x 10^m, up to 1e-4 D) at which the
-packing passes the strict-jamming test (randmedia.describe.jamming_resolution).
+packing passes the strict-jamming test (randmedia.describe.jamming_resolution), and
+``cpu_seconds``, the CPU its construction took (the packing's attribute: a kept packing's is
+that of the run that made it). Only the per-system mean and SEM of the summary columns are
+added (randmedia.describe.jamming.summary_table).
 """
 from pathlib import Path
 
@@ -18,7 +21,7 @@ records = []
 for path in snakemake.input.samples:
     # the system's jamming-test constants (configs/{system}/sample{k}.nc)
     contacts = dict(snakemake.params.contacts[Path(path).parent.name])
-    dataset = read_dataset(path, attrs=PACKING_ATTRS + ("diameter",))
+    dataset = read_dataset(path, attrs=PACKING_ATTRS + ("diameter", "cpu_seconds"))
     # the packing rule stored the test at the configured tolerance (same contact options) as `jammed`
     if dataset.attrs["jammed"]:
         certified = contacts["gap_tolerance"]
@@ -29,6 +32,7 @@ for path in snakemake.input.samples:
              contacts["gap_tolerance"], dataset.attrs["jammed"], certified)
     # attempt: which seed made it (0 = the sample's own; packings made before redraws existed lack it)
     records.append({"file": str(path), **{key: dataset.attrs[key] for key in PACKING_ATTRS},
+                    "cpu_seconds": float(dataset.attrs["cpu_seconds"]),
                     "attempt": int(dataset.attrs.get("attempt", 0)), "certified_gap_tolerance": certified,
                     # the route that made it (randmedia.generate.mrj.ROUTES) and its polish LPs
                     "route": dataset.attrs.get("route_name", "compression"),
