@@ -115,10 +115,11 @@ def test_packings_table_matches_the_files(jammed_run, section):
         assert mean["jammed"] == 1.0
     for system, k, path in packing_files(jammed_run, section):
         row = table[(table["system"] == system) & (table["sample"] == str(k))].iloc[0]
-        assert row["phi"] == pytest.approx(read_dataset(path).attrs["phi"], rel=1e-12)
-        assert row["attempt"] == read_dataset(path).attrs["attempt"]  # which seed made it (0: the first)
+        attrs = read_dataset(path).attrs
+        assert row["phi"] == pytest.approx(attrs["phi"], rel=1e-12)
+        assert row["attempt"] == attrs["attempt"]  # which seed made it (0: the first)
         # the cost of its construction (issue 26 section 4), the file's own measurement
-        assert row["cpu_seconds"] == pytest.approx(read_dataset(path).attrs["cpu_seconds"], rel=1e-12)
+        assert row["cpu_seconds"] == pytest.approx(attrs["cpu_seconds"], rel=1e-12)
         assert row["cpu_seconds"] > 0
         # jammed at the configured tolerance, so certified at the first rung of the ladder
         assert row["certified_gap_tolerance"] == pytest.approx(section["contacts"]["gap_tolerance"])
