@@ -377,6 +377,19 @@ def test_unconverged_construction_raises():
         jammed.jam(start, box, jammed.TJParameters(max_lps=5))
 
 
+def test_unconverged_construction_can_end_at_max_lps_instead():
+    """at_max_lps="end": the run stops after max_lps LPs and returns that state, marked
+    "max_lps" -- the same positions as a run with a larger cap has after as many LPs."""
+    start, box = random_sequential_addition(np.random.default_rng(0), 50, 0.25)
+    ended = jammed.jam(start, box, jammed.TJParameters(max_lps=5), at_max_lps="end")
+    assert ended.stop == "max_lps" and ended.n_lp == 5 and ended.phi > 0.26
+    longer = jammed.jam(start, box, jammed.TJParameters(max_lps=5000))
+    assert longer.stop == "converged" and longer.n_lp > 5
+    np.testing.assert_array_equal(ended.history["phi"], longer.history["phi"][:5])
+    with pytest.raises(ValueError, match="at_max_lps"):
+        jammed.jam(start, box, at_max_lps="continue")
+
+
 def test_summary_table_means_and_sems():
     records = [{"system": "mrj", "sample": k, "n_particles": 10, "phi": 0.63 + 0.001 * k,
                 "z_mean_nonrattlers": 6.1, "rattler_fraction": 0.01 * k, "isostatic_excess": 0,

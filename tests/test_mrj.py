@@ -162,6 +162,19 @@ def test_killed_run_resumes_from_its_checkpoint(tmp_path, monkeypatch, packing):
     assert not checkpoint.exists()
 
 
+def test_a_dilute_stage_at_max_lps_hands_over_to_the_polish():
+    """A dilute stage still compacting after max_lps LPs is not discarded: the polish takes
+    over (as after the inflation stage's cap), certifies the packing and the file says why
+    the dilute stage ended."""
+    protocol = mrj.MRJProtocol(route="dilute", dilute=mrj.DiluteTJ(max_lps=30))
+    packing = mrj.make_packing(2, 100, protocol)
+    assert packing.n_dilute_lp == 30 and packing.dilute_stop == "max_lps"
+    assert packing.construction_attrs()["dilute_stop"] == "max_lps"
+    assert packing.n_lp > 30  # the polish ran
+    analysis = jamming.analyse(packing.positions, packing.box, packing.diameter)
+    assert analysis.jammed and analysis.isostatic_excess == 0
+
+
 def test_unconverged_inflation_hands_over_to_the_polish():
     """After max_lps inflation LPs the TJ polish takes over; the packing is still strictly
     jammed (the polish's own test) and records why the inflation stage ended."""
@@ -238,6 +251,7 @@ def test_the_dilute_route_makes_a_strictly_jammed_packing_and_resumes_after_its_
     history = packing.lp_history()
     assert (history["stage"][:packing.n_dilute_lp] == 2).all() and (history["stage"][packing.n_dilute_lp:] == 1).all()
     assert packing.construction_attrs()["route_name"] == "dilute"
+    assert packing.dilute_stop == "converged"
     # a kill in the polish: the run resumes after the dilute stage, with the same packing
     checkpoint = tmp_path / "dilute.npz"
     calls = {"n": 0}

@@ -105,6 +105,12 @@ class ConstructionError(RuntimeError):
     """The SLP did not converge within ``max_lps`` or produced an invalid packing."""
 
 
+#: what :func:`jam` does after ``max_lps`` LPs without converging: "raise"
+#: :class:`ConstructionError`, or "end" the construction and return its state (a stage that a
+#: later stage goes on from, as the TJ code writes its packing after ``max_iterations``)
+AT_MAX_LPS = ("raise", "end")
+
+
 @dataclass(frozen=True)
 class TJParameters:
     """Constants of the Torquato-Jiao SLP (module docstring; lengths in units of D)."""
@@ -185,6 +191,8 @@ class JammedPacking:
     lp_seconds: float
     history: dict = field(default_factory=dict)  # per LP: phi, trace, rescale, rows, seconds
     params: TJParameters = TJParameters()
+    #: why the construction ended: "converged", or "max_lps" (only with ``at_max_lps="end"``)
+    stop: str = "converged"
 
     @property
     def phi(self) -> float:
@@ -546,7 +554,7 @@ def _next_trust(trust: float, predicted: float, actual: float,
 def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParameters(), *,
         diameter: float = 1.0, checkpoint: str | os.PathLike | None = None,
         checkpoint_seconds: float = 60.0, log: logging.Logger | None = None,
-        log_seconds: float = 15.0, threads: int = 1) -> JammedPacking:
+        log_seconds: float = 15.0, threads: int = 1, at_max_lps: str = "raise") -> JammedPacking:
     """Compress a non-overlapping packing to a strictly jammed one by TJ steps (module docstring).
 
     Parameters
@@ -567,6 +575,10 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         Progress (LPs, rate, phi, Tr epsilon, rescale, rows, ETA) at most every ``log_seconds``.
     threads : int
         HiGHS threads.
+    at_max_lps : {"raise", "end"}
+        After ``params.max_lps`` LPs without convergence: raise, or end and return the state
+        with ``stop`` = "max_lps" (:data:`AT_MAX_LPS`). Not part of the checkpoint's key: it
+        changes where a run ends, not its LPs.
 
     Returns
     -------
@@ -576,9 +588,11 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     Raises
     ------
     ConstructionError
-        If not converged after ``params.max_lps`` LPs.
+        If not converged after ``params.max_lps`` LPs and ``at_max_lps`` is "raise".
     """
     log = log or logging.getLogger(__name__)
+    if at_max_lps not in AT_MAX_LPS:
+        raise ValueError(f"at_max_lps must be one of {AT_MAX_LPS}, got {at_max_lps!r}")
     positions = np.array(positions, dtype=float)
     box = np.array(box, dtype=float)
     n, dim = positions.shape
@@ -602,13 +616,21 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         positions = Cell(box).wrap(positions)
     trust = history["trust_next"][-1] if history["trust_next"] else 1.0
     jammed = False  # the LP with the full bounds cannot lower the volume
+    stop = "converged"
     # in the final phase (final_backend) once its first LP is in the history
     final = bool(history["final"]) and bool(history["final"][-1])
     progress = run.progress(None, "TJ", "LPs", done=len(history["phi"]))
 
     def finished() -> bool:
-        nonlocal final, jammed, trust
-        if converged():
+        nonlocal final, jammed, trust, stop
+        done = converged()
+        if not done and len(history["phi"]) >= params.max_lps:  # at_max_lps "end"
+            stop = "max_lps"
+            log.warning("not converged after max_lps = %d LPs (phi = %.6f, last Tr epsilon %.3g): "
+                        "the construction ends here", params.max_lps, history["phi"][-1],
+                        history["trace"][-1])
+            return True
+        if done:
             if final or not params.final_backend:
                 return True
             log.info("converged with %s after %d LPs; going on with %s", params.backend,
@@ -632,7 +654,7 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         if trust < MIN_TRUST:
             log.info("trust factor below %g: no LP step raises phi any more", MIN_TRUST)
             return True
-        if len(history["phi"]) >= params.max_lps:
+        if len(history["phi"]) >= params.max_lps and at_max_lps == "raise":
             change = (accepted[-1] - accepted[-3]) / accepted[-1] if len(accepted) >= 3 else np.nan
             raise ConstructionError(
                 f"TJ did not converge within max_lps = {params.max_lps} LPs (phi = "
@@ -685,7 +707,8 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     return JammedPacking(positions=positions, box=box, diameter=diameter, n_lp=len(history["phi"]),
                          seconds=run.seconds, cpu_seconds=run.cpu_seconds,
                          lp_seconds=float(np.sum(history["seconds"])),
-                         history={k: np.asarray(v) for k, v in history.items()}, params=params)
+                         history={k: np.asarray(v) for k, v in history.items()}, params=params,
+                         stop=stop)
 
 
 def _report(progress, history, dim, max_lps: int) -> None:

@@ -68,6 +68,12 @@ class DiluteTJ:
     accepted and its overlaps removed by rescaling (no trust region), stop when the cell
     volume changed by at most ``volume_tolerance`` of the start volume over two LPs.
 
+    ``max_lps`` bounds the stage: after that many LPs it ends where it stands and the polish
+    takes over, as the TJ code ends after ``max_iterations`` LPs and writes its packing (2000
+    in its example parameters; here 5000, above every N = 2000 stage made so far, 649-1557
+    LPs, so the cap changes none of them; docs/mrj2016.md). The packing's ``dilute_stop``
+    says which rule ended the stage.
+
     Strain bounds: the code multiplies every length-like constant by the diameter of its
     unit-cell start, the strain bounds ``comp_max`` = ``shear_max`` = 0.1 included, so its
     strain bound is ``strain_max`` D / L_0 = 0.1 (phi_0 / (n v_1))^(1/d) -- 0.0073, 0.0046 and
@@ -144,6 +150,8 @@ class MRJPacking(JammedPacking):
     #: per-LP record of the dilute TJ stage (route "dilute"; jammed.jam's history keys)
     dilute_history: dict = field(default_factory=dict)
     n_dilute_lp: int = 0
+    #: why the dilute stage ended: "converged" (the TJ code's volume rule) or "max_lps"
+    dilute_stop: str = ""
 
     def construction_attrs(self) -> dict:
         attrs = {f"{stage}_{k}": v for stage, values in self.params.as_dict().items()
@@ -154,6 +162,7 @@ class MRJPacking(JammedPacking):
         attrs["n_polish_lp"] = self.n_lp - self.n_inflation_lp - self.n_dilute_lp
         if self.params.route == "dilute":
             attrs["n_dilute_lp"] = self.n_dilute_lp
+            attrs["dilute_stop"] = self.dilute_stop
         return attrs
 
     def lp_history(self) -> dict:
@@ -210,7 +219,8 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
     ConstructionError
         If the polish does not converge within ``protocol.polish.max_lps``
         (:func:`randmedia.generate.jammed.jam`); inflation LPs that do not converge within
-        ``protocol.inflation.max_lps`` hand over to the polish instead.
+        ``protocol.inflation.max_lps``, and a dilute stage after ``protocol.dilute.max_lps``
+        LPs, hand over to the polish instead.
     """
     log = log or logging.getLogger(__name__)
     validate_packing_input(n, 0.5, dim)
@@ -304,9 +314,10 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
     key = checkpoint_key(seed=int(seed), n=int(n), dim=int(dim), dilute=asdict(protocol.dilute))
     run = ResumableRun(checkpoint, key, log, checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
     state = run.resume(lambda data: (data["positions"], data["box"],
-                                     {k[len("history_"):]: v for k, v in data.items() if k.startswith("history_")}))
+                                     {k[len("history_"):]: v for k, v in data.items() if k.startswith("history_")},
+                                     str(data["stop"]) if "stop" in data else "converged"))
     if state is not None:
-        positions, box, history = state
+        positions, box, history, stop = state
         log.info("resumed from %s after the dilute TJ stage (%d LPs)", checkpoint, len(history["phi"]))
     else:
         start, start_box = random_sequential_addition(np.random.default_rng(seed), n,
@@ -315,11 +326,13 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
             Path(checkpoint).with_name(Path(checkpoint).stem + ".dilute.npz")
         stage = _nested_stage(run, lambda: jam(
             start, start_box, protocol.dilute.tj_parameters(n, dim), checkpoint=stage_checkpoint,
-            checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds, threads=threads))
-        positions, box, history = stage.positions, stage.box, stage.history
-        log.info("dilute TJ stage: phi = %.6f after %d LPs (%.1f s CPU)", stage.phi, stage.n_lp,
-                 stage.cpu_seconds)
-        run.save({"positions": positions, "box": box,
+            checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds, threads=threads,
+            at_max_lps="end"))
+        positions, box, history, stop = stage.positions, stage.box, stage.history, stage.stop
+        log.info("dilute TJ stage: phi = %.6f after %d LPs (%.1f s CPU)%s", stage.phi, stage.n_lp,
+                 stage.cpu_seconds, "" if stop == "converged" else
+                 "; max_lps reached before the volume rule: the polish takes over")
+        run.save({"positions": positions, "box": box, "stop": np.asarray(stop),
                   **{f"history_{k}": np.asarray(v) for k, v in history.items()}})
     packing = _nested_stage(run, lambda: jam(
         positions, box, protocol.polish, checkpoint=_polish_checkpoint(checkpoint),
@@ -335,7 +348,7 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
                       history=packing.history, params=protocol,
                       compression={"phi": protocol.dilute.initial_phi},
                       dilute_history={k: np.asarray(v) for k, v in history.items()},
-                      n_dilute_lp=n_dilute)
+                      n_dilute_lp=n_dilute, dilute_stop=stop)
 
 
 #: seeds tried per sample by :func:`make_packing_retrying` (the first and two redraws)
