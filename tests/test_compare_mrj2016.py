@@ -102,3 +102,24 @@ def test_eq11_note_of_one_sample_says_it_has_no_sem():
     assert _eq11_note(one, 9.0) == "; Eq. (11) of our S2 gives 1.5e-05 D^3 (one sample: no SEM over samples) at this kD"
     two = one.assign(chi_ft_sem=("k_ft", [1e-6, 1e-6]))
     assert _eq11_note(two, 9.0).endswith("1.5e-05 +- 1e-06 D^3 at this kD")
+
+
+def test_phi_of_one_large_packing_takes_its_sem_from_the_smaller_ensemble():
+    """The Fig. 6 row (N = 10 000, phi = 0.637): with one packing its SEM is the SD of the
+    N = 2000 ensemble scaled by (2000 / 10 000)^(1/2), and the note says so; with two or more,
+    the SEM over the packings themselves."""
+    import xarray as xr
+
+    from randmedia.compare.mrj2016 import phi_mean_sem
+
+    def ensemble(phis, n):
+        return xr.Dataset({"eta": ("sample", phis), "n": ("sample", [n] * len(phis))})
+
+    small = ensemble([0.634, 0.636, 0.635], 2000)
+    mean, sem, note = phi_mean_sem(ensemble([0.6370], 10000), small)
+    assert mean == 0.6370 and sem == pytest.approx(0.001 * math.sqrt(0.2))
+    assert "one sample" in note and "0.00045" in note
+    mean, sem, note = phi_mean_sem(ensemble([0.6370, 0.6360], 10000), small)
+    assert (mean, note) == (pytest.approx(0.6365), "") and sem == pytest.approx(0.0005)
+    assert math.isnan(phi_mean_sem(None, small)[0])
+    assert math.isnan(phi_mean_sem(ensemble([0.637], 10000), None)[1])

@@ -42,7 +42,9 @@ TABLE_ERRORS = {
 }
 TABLE_SYSTEMS = {2: "equilibrium", 3: "mrj", 4: "equilibrium", 5: "mrj_large"}
 #: the paper's packing fractions of the systems it tabulates
-PAPER_PHI = {"equilibrium": 0.4780, "mrj": 0.6356, "mrj_large": 0.6356}
+#: the packing fractions the paper gives: Tables II and III's captions; for its 14 packings of
+#: N = 10 000 the label of Fig. 6's MRJ panel (Sec. IV: that panel's packings)
+PAPER_PHI = {"equilibrium": 0.4780, "mrj": 0.6356, "mrj_large": 0.637}
 #: Gaussianity criterion of f_R(N) (see gaussian_radius)
 GAUSSIAN_THRESHOLD = 0.15
 GAUSSIAN_MIN_WINDOWS = 200
@@ -79,6 +81,25 @@ def _mean_sem(values):
     if values.size < 2:
         return float(values.mean()) if values.size else math.nan, math.nan
     return float(values.mean()), float(values.std(ddof=1) / math.sqrt(values.size))
+
+
+def phi_mean_sem(ds, smaller=None) -> tuple[float, float, str]:
+    """(mean, SEM, note) of the packing fraction over the samples of ``ds`` (NaN, NaN if
+    None). With one sample there is no SEM over samples; then the standard deviation of the
+    ``smaller`` ensemble (the same protocol at N' spheres, >= 2 samples) scaled by
+    (N' / N)^(1/2) stands in for it -- the central-limit rate for a mean over N spheres (a
+    faster fall with N would make it an overestimate) -- and ``note`` says so; otherwise
+    ``note`` is ""."""
+    if ds is None:
+        return math.nan, math.nan, ""
+    mean, sem = _mean_sem(ds["eta"].values)
+    if ds.sizes["sample"] >= 2 or smaller is None or smaller.sizes["sample"] < 2:
+        return mean, sem, ""
+    n, n_smaller = float(np.mean(ds["n"].values)), float(np.mean(smaller["n"].values))
+    sd = float(np.std(smaller["eta"].values, ddof=1))
+    sem = sd * math.sqrt(n_smaller / n)
+    return mean, sem, (f"; one sample: its SEM is the SD of the N = {n_smaller:.0f} packings "
+                       f"({sd:.2g}) x (N'/N)^1/2 = {sem:.2g}")
 
 
 # --------------------------------------------------------------------------- tables
@@ -469,6 +490,11 @@ def _quoted_rows(rows: Rows, reference_path, inputs, params):
                 factor = 6.0 if quantity == "specific_surface" else 1.0
                 mean, sem = _mean_sem(factor * ds["eta"].values)
             reason = _phi_reason(base, ds)
+        elif quantity == "packing_fraction" and system == "mrj_large":
+            # the paper labels its N = 10 000 MRJ packings phi = 0.637 (Fig. 6)
+            ds = any_of(system)
+            mean, sem, note = phi_mean_sem(ds, any_of("mrj"))
+            reason = _phi_reason(system, ds) + note
         elif quantity == "specific_surface" and base == "overlapping":
             mean, sem = specific_surface(0.5, params["overlapping_phi"], 3), 0.0
             reason = "exact formula at our phi"
