@@ -339,6 +339,33 @@ def test_editing_a_module_reruns_exactly_its_importers(complete, module):
             "Input files updated by another job"), (key, job["reason"])
 
 
+@pytest.mark.workflow
+@pytest.mark.parametrize("script", ["sphere2019/comparison.py", "mrj2016/jammed_packings.py"])
+def test_editing_a_script_reruns_exactly_its_rules(complete, script):
+    """Edit one rule script (not a package module): Snakemake's code trigger plans every job of
+    the rules that run it, plus their downstream jobs, and nothing else -- so a script needs no
+    place in the rules' input ``code`` (tried 2026-12-06 with Snakemake 9.27 on rules included
+    from workflow/rules/ with a relative script path)."""
+    workdir, dag, rules = complete
+    path = workdir / "workflow" / "scripts" / script
+    users = {name for name, rule in rules.items()
+             if rule["script"] and Path(rule["script"]).resolve() == path.resolve()}
+    assert users
+    expected = descendants(dag, {key for key in dag if key[0] in users})
+    assert expected != set(dag)
+    original, stat = path.read_bytes(), path.stat()
+    try:
+        path.write_bytes(original + b"\n# edited by test_reruns\n")
+        planned = plan(workdir)
+    finally:
+        path.write_bytes(original)
+        os.utime(path, ns=(stat.st_atime_ns, stat.st_mtime_ns))
+    assert_same_jobs(planned, expected)
+    for key, job in planned.items():
+        assert job["reason"] == "Code has changed since last execution" or job["reason"].startswith(
+            "Input files updated by another job"), (key, job["reason"])
+
+
 def describe_job(kind, stage=None):
     rule = {"chunk": "mrj2016_describe_chunk", "merge": "mrj2016_describe"}
     return lambda key, job: (key[0] in ([rule[stage]] if stage else rule.values())
