@@ -307,6 +307,18 @@ def plan(workdir: Path, *extra: str) -> dict:
     return parse_jobs(plan_text(workdir, *extra))
 
 
+def plan_after_editing(workdir: Path, path: Path) -> dict:
+    """The dry run's jobs with ``path``'s content edited (a comment appended), then the file
+    restored with its old modification time."""
+    original, stat = path.read_bytes(), path.stat()
+    try:
+        path.write_bytes(original + b"\n# edited by test_reruns\n")
+        return plan(workdir)
+    finally:
+        path.write_bytes(original)
+        os.utime(path, ns=(stat.st_atime_ns, stat.st_mtime_ns))
+
+
 @pytest.mark.workflow
 # stats.py: imported by 12 modules of the package and by no script directly. (periodic.py, the
 # same kind of module, reaches every job of the quick DAG since every figure rule of a paper runs
@@ -326,13 +338,7 @@ def test_editing_a_module_reruns_exactly_its_importers(complete, module):
     seeds = {key for key in dag if key[0] in importers}
     expected = descendants(dag, seeds)
     assert expected != set(dag)  # the edit must leave some jobs alone to prove anything
-    original, stat = path.read_bytes(), path.stat()
-    try:
-        path.write_bytes(original + b"\n# edited by test_reruns\n")
-        planned = plan(workdir)
-    finally:
-        path.write_bytes(original)
-        os.utime(path, ns=(stat.st_atime_ns, stat.st_mtime_ns))
+    planned = plan_after_editing(workdir, path)
     assert_same_jobs(planned, expected)
     for key, job in planned.items():  # a job reruns because of the edit or of an upstream rerun
         assert job["reason"] in (f"Updated input files: {path}",) or job["reason"].startswith(
@@ -353,13 +359,7 @@ def test_editing_a_script_reruns_exactly_its_rules(complete, script):
     assert users
     expected = descendants(dag, {key for key in dag if key[0] in users})
     assert expected != set(dag)
-    original, stat = path.read_bytes(), path.stat()
-    try:
-        path.write_bytes(original + b"\n# edited by test_reruns\n")
-        planned = plan(workdir)
-    finally:
-        path.write_bytes(original)
-        os.utime(path, ns=(stat.st_atime_ns, stat.st_mtime_ns))
+    planned = plan_after_editing(workdir, path)
     assert_same_jobs(planned, expected)
     for key, job in planned.items():
         assert job["reason"] == "Code has changed since last execution" or job["reason"].startswith(
