@@ -118,6 +118,8 @@ def test_packings_table_matches_the_files(jammed_run, section):
         attrs = read_dataset(path).attrs
         assert row["phi"] == pytest.approx(attrs["phi"], rel=1e-12)
         assert row["attempt"] == attrs["attempt"]  # which seed made it (0: the first)
+        if attrs.get("route_name") == "dilute":  # which rule ended the dilute stage
+            assert row["dilute_stop"] == attrs["dilute_stop"] and row["dilute_stop"] in ("converged", "max_lps")
         # the cost of its construction (issue 26 section 4), the file's own measurement
         assert row["cpu_seconds"] == pytest.approx(attrs["cpu_seconds"], rel=1e-12)
         assert row["cpu_seconds"] > 0

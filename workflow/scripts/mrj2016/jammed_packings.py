@@ -36,7 +36,12 @@ for path in snakemake.input.samples:
                     "attempt": int(dataset.attrs.get("attempt", 0)), "certified_gap_tolerance": certified,
                     # the route that made it (randmedia.generate.mrj.ROUTES) and its polish LPs
                     "route": dataset.attrs.get("route_name", "compression"),
-                    "n_polish_lp": int(dataset.attrs.get("n_polish_lp", -1))})
+                    "n_polish_lp": int(dataset.attrs.get("n_polish_lp", -1)),
+                    # why the dilute stage ended: "converged" (the TJ code's volume rule) or
+                    # "max_lps" (handed to the polish); packings made before 2026-12-06 lack it,
+                    # and their dilute stages could only converge
+                    "dilute_stop": dataset.attrs.get(
+                        "dilute_stop", "converged" if dataset.attrs.get("route_name") == "dilute" else "")})
 table = summary_table(records)
 for _, row in table[table["sample"].isin(["mean", "sem"])].iterrows():
     log.info("%s %s: phi %.5f, z %.4f, rattlers %.4f, Q6 %.4f", row["system"], row["sample"],
