@@ -162,7 +162,7 @@ def test_killed_run_resumes_from_its_checkpoint(tmp_path, monkeypatch, packing):
     assert not checkpoint.exists()
 
 
-def test_a_dilute_stage_at_max_lps_hands_over_to_the_polish():
+def test_a_dilute_stage_at_max_lps_hands_over_to_the_polish(tmp_path):
     """A dilute stage still compacting after max_lps LPs is not discarded: the polish takes
     over (as after the inflation stage's cap), certifies the packing and the file says why
     the dilute stage ended."""
@@ -173,6 +173,9 @@ def test_a_dilute_stage_at_max_lps_hands_over_to_the_polish():
     assert packing.n_lp > 30  # the polish ran
     analysis = jamming.analyse(packing.positions, packing.box, packing.diameter)
     assert analysis.jammed and analysis.isostatic_excess == 0
+    # a kill in the polish: the resumed run still knows why the dilute stage ended
+    resumed = made_again_after_a_kill_in_the_polish(2, 100, protocol, tmp_path / "capped.npz")
+    assert resumed.dilute_stop == "max_lps" and np.array_equal(resumed.positions, packing.positions)
 
 
 def test_unconverged_inflation_hands_over_to_the_polish():
@@ -253,7 +256,16 @@ def test_the_dilute_route_makes_a_strictly_jammed_packing_and_resumes_after_its_
     assert packing.construction_attrs()["route_name"] == "dilute"
     assert packing.dilute_stop == "converged"
     # a kill in the polish: the run resumes after the dilute stage, with the same packing
-    checkpoint = tmp_path / "dilute.npz"
+    resumed = made_again_after_a_kill_in_the_polish(2, 100, protocol, tmp_path / "dilute.npz")
+    assert np.array_equal(resumed.positions, packing.positions) and np.array_equal(resumed.box, packing.box)
+
+
+def made_again_after_a_kill_in_the_polish(seed, n, protocol, checkpoint):
+    """make_packing killed in its polish (the second jam call: the dilute stage ran), then
+    run again from ``checkpoint``: the second run resumes after the dilute stage (only the
+    polish runs) and removes the checkpoint. Returns the second run's packing."""
+    import unittest.mock as mock
+
     calls = {"n": 0}
     original = mrj.jam
 
@@ -263,16 +275,14 @@ def test_the_dilute_route_makes_a_strictly_jammed_packing_and_resumes_after_its_
             raise KeyboardInterrupt
         return original(*args, **kwargs)
 
-    import unittest.mock as mock
-
     with mock.patch.object(mrj, "jam", jam_killed_in_the_polish), pytest.raises(KeyboardInterrupt):
-        mrj.make_packing(2, 100, protocol, checkpoint=checkpoint, checkpoint_seconds=0.0)
+        mrj.make_packing(seed, n, protocol, checkpoint=checkpoint, checkpoint_seconds=0.0)
     assert checkpoint.exists()
     with mock.patch.object(mrj, "jam", side_effect=lambda *a, **k: original(*a, **k)) as spy:
-        resumed = mrj.make_packing(2, 100, protocol, checkpoint=checkpoint, checkpoint_seconds=0.0)
+        resumed = mrj.make_packing(seed, n, protocol, checkpoint=checkpoint, checkpoint_seconds=0.0)
     assert spy.call_count == 1  # the polish only
-    assert np.array_equal(resumed.positions, packing.positions) and np.array_equal(resumed.box, packing.box)
     assert not checkpoint.exists()
+    return resumed
 
 
 def killed_in_polish_after(calls: int, step):

@@ -41,7 +41,6 @@ TABLE_ERRORS = {
     3: {"S2": 2e-4, "Fsv_over_s": 2e-4, "Fss_over_s2": 2e-4, "EV": 5e-6},
 }
 TABLE_SYSTEMS = {2: "equilibrium", 3: "mrj", 4: "equilibrium", 5: "mrj_large"}
-#: the paper's packing fractions of the systems it tabulates
 #: the packing fractions the paper gives: Tables II and III's captions; for its 14 packings of
 #: N = 10 000 the label of Fig. 6's MRJ panel (Sec. IV: that panel's packings)
 PAPER_PHI = {"equilibrium": 0.4780, "mrj": 0.6356, "mrj_large": 0.637}
