@@ -624,7 +624,14 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     def finished() -> bool:
         nonlocal final, jammed, trust, stop
         done = converged()
-        if not done and len(history["phi"]) >= params.max_lps:  # at_max_lps "end"
+        if not done and len(history["phi"]) >= params.max_lps:
+            if at_max_lps == "raise":
+                accepted = phase_phis()
+                change = (accepted[-1] - accepted[-3]) / accepted[-1] if len(accepted) >= 3 else np.nan
+                raise ConstructionError(
+                    f"TJ did not converge within max_lps = {params.max_lps} LPs (phi = "
+                    f"{packing_fraction(positions, box, diameter):.6f}, last relative change "
+                    f"{change:.3g} > tolerance {params.tolerance:g})")
             stop = "max_lps"
             log.warning("not converged after max_lps = %d LPs (phi = %.6f, last Tr epsilon %.3g): "
                         "the construction ends here", params.max_lps, history["phi"][-1],
@@ -638,12 +645,15 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
             final, jammed, trust = True, False, 1.0
         return False
 
+    def phase_phis() -> list:
+        """phi after each accepted LP of the current phase."""
+        return [phi for phi, ok, last in zip(history["phi"], history["accepted"], history["final"])
+                if ok and bool(last) == final]
+
     def converged() -> bool:
         if jammed:
             return True
-        # the LPs of the current phase only
-        accepted = [phi for phi, ok, last in zip(history["phi"], history["accepted"], history["final"])
-                    if ok and bool(last) == final]
+        accepted = phase_phis()
         if len(accepted) >= 3 and abs(accepted[-1] - accepted[-3]) <= params.tolerance * accepted[-1]:
             return True
         if params.volume_tolerance_start > 0 and len(accepted) >= 3:
@@ -654,12 +664,6 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         if trust < MIN_TRUST:
             log.info("trust factor below %g: no LP step raises phi any more", MIN_TRUST)
             return True
-        if len(history["phi"]) >= params.max_lps and at_max_lps == "raise":
-            change = (accepted[-1] - accepted[-3]) / accepted[-1] if len(accepted) >= 3 else np.nan
-            raise ConstructionError(
-                f"TJ did not converge within max_lps = {params.max_lps} LPs (phi = "
-                f"{packing_fraction(positions, box, diameter):.6f}, last relative change "
-                f"{change:.3g} > tolerance {params.tolerance:g})")
         return False
 
     def step() -> None:
