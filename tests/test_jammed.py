@@ -12,6 +12,7 @@ that bound, so the mean contact number of the non-rattlers is 2 M / N_b =
 from __future__ import annotations
 
 import itertools
+from dataclasses import replace
 from pathlib import Path
 
 import numpy as np
@@ -388,6 +389,20 @@ def test_unconverged_construction_can_end_at_max_lps_instead():
     np.testing.assert_array_equal(ended.history["phi"], longer.history["phi"][:5])
     with pytest.raises(ValueError, match="at_max_lps"):
         jammed.jam(start, box, at_max_lps="continue")
+
+
+def test_a_run_with_a_final_backend_ends_at_max_lps_after_one_vertex_lp():
+    """With a final_backend, a run ended at max_lps first solves one LP with it (the final
+    phase's first), so the state it returns has its contacts closed at a vertex; the LPs
+    before are those of the same run without the final backend."""
+    start, box = random_sequential_addition(np.random.default_rng(0), 50, 0.25)
+    params = jammed.TJParameters(max_lps=5, backend="highs-hipo")
+    interior = jammed.jam(start, box, params, at_max_lps="end")
+    ended = jammed.jam(start, box, replace(params, final_backend="highs-ipm"), at_max_lps="end")
+    assert ended.stop == "max_lps" and ended.n_lp == 6
+    assert list(ended.history["final"]) == [0, 0, 0, 0, 0, 1]
+    np.testing.assert_array_equal(ended.history["phi"][:5], interior.history["phi"])
+    assert ended.phi >= interior.phi * (1 - 1e-10)
 
 
 def test_summary_table_means_and_sems():

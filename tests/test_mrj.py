@@ -178,6 +178,46 @@ def test_a_dilute_stage_at_max_lps_hands_over_to_the_polish(tmp_path):
     assert resumed.dilute_stop == "max_lps" and np.array_equal(resumed.positions, packing.positions)
 
 
+def test_a_polish_at_max_lps_ends_and_is_tested_when_so_configured():
+    """polish.at_max_lps "end" (mrj_large's): a polish still compacting at its cap ends after
+    one vertex LP, the packing is returned by the first attempt (no redraw) and marked
+    "max_lps", and the certificate tests it without repairing it; "redraw" (the shared
+    polish's, the default) raises, so make_packing_retrying discards the start."""
+    from randmedia.studies.jammed_certificate import certified
+
+    polish = replace(mrj.MRJProtocol().polish, max_lps=3, backend="highs-hipo", final_backend="highs-ipm")
+    capped = mrj.MRJProtocol(route="dilute", dilute=mrj.DiluteTJ(max_lps=30), polish=polish,
+                             polish_at_max_lps="end")
+    packing, attempt = mrj.make_packing_retrying([2, 3], 100, capped)
+    assert attempt == 0 and packing.stop == "max_lps" and packing.n_lp == 30 + 4
+    assert list(packing.history["final"]) == [0, 0, 0, 1]
+    attrs = packing.construction_attrs()
+    assert attrs["polish_stop"] == "max_lps" and attrs["polish_at_max_lps"] == "end"
+    tested, analysis, repair = certified(packing, capped.polish, {})
+    assert repair.rounds == 0 and np.array_equal(tested.positions, packing.positions)
+    assert analysis.jammed == jamming.analyse(packing.positions, packing.box, packing.diameter).jammed
+    with pytest.raises(ConstructionError, match="max_lps"):
+        mrj.make_packing(2, 100, replace(capped, polish_at_max_lps="redraw"))
+    with pytest.raises(ValueError, match="polish.at_max_lps"):
+        replace(capped, polish_at_max_lps="keep")
+
+
+def test_the_polish_cap_rule_comes_from_the_config():
+    """The paper config: mrj_large's polish ends at its cap, the shared polish (mrj, mrj_md)
+    redraws, with the key absent (so the kept N = 2000 packings' configuration is unchanged)."""
+    from conftest import REPO, SCHEMA
+    from randmedia.config import load_config, validate_config
+
+    config = load_config(REPO / "config" / "config.yaml")
+    validate_config(config, SCHEMA)  # what Snakemake sees: the schema's defaults filled in
+    section = config["mrj2016"]["mrj"]
+    assert "at_max_lps" not in section["polish"]
+    assert mrj.MRJProtocol.from_config(section).polish_at_max_lps == "redraw"
+    large = {**section, "polish": {**section["polish"], **section["mrj_large"]["polish"]}}
+    protocol = mrj.MRJProtocol.from_config(large)
+    assert protocol.polish_at_max_lps == "end" and protocol.polish.max_lps == 1000
+
+
 def test_unconverged_inflation_hands_over_to_the_polish():
     """After max_lps inflation LPs the TJ polish takes over; the packing is still strictly
     jammed (the polish's own test) and records why the inflation stage ended."""

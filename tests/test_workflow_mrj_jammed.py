@@ -78,6 +78,7 @@ def test_a_system_polishes_with_its_own_solver(jammed_run, section):
     same contact gap."""
     assert section["mrj_large"]["polish"]["backend"] != section["polish"]["backend"]
     assert section["mrj_large"]["polish"]["max_lps"] != section["polish"]["max_lps"]
+    assert section["mrj_large"]["polish"]["at_max_lps"] == "end" and "at_max_lps" not in section["polish"]
     assert section["mrj_large"]["contacts"]["rank_tolerance"] != section["contacts"]["rank_tolerance"]
     for system, k, path in packing_files(jammed_run, section):
         made_with = json.loads(read_dataset(path).attrs["config_json"])
@@ -120,6 +121,8 @@ def test_packings_table_matches_the_files(jammed_run, section):
         assert row["attempt"] == attrs["attempt"]  # which seed made it (0: the first)
         if attrs.get("route_name") == "dilute":  # which rule ended the dilute stage
             assert row["dilute_stop"] == attrs["dilute_stop"] and row["dilute_stop"] in ("converged", "max_lps")
+        # why the polish ended: every quick polish converges (mrj_large's would end at its cap)
+        assert row["polish_stop"] == attrs["polish_stop"] == "converged"
         # the cost of its construction (issue 26 section 4), the file's own measurement
         assert row["cpu_seconds"] == pytest.approx(attrs["cpu_seconds"], rel=1e-12)
         assert row["cpu_seconds"] > 0

@@ -67,6 +67,8 @@ by 1e-9 - 1e-8 D and passed the jamming test only from a 1e-8 D contact gap. Wit
 ``final_backend`` (a vertex backend) the construction goes on from that state until an LP
 solved to a vertex converges too (a few LPs): its active rows are exact, as with a vertex
 backend from the start. The LPs of the final phase are marked in the history (``final``).
+A run that ends at ``max_lps`` (``at_max_lps="end"``) before its final phase began still
+solves one LP with ``final_backend`` first, so the state it returns has closed contacts too.
 
 Warm start. With the dual simplex (``highs-simplex``) each LP starts from the optimal basis
 of the previous one, its rows matched by pair (:func:`packing_lp.carry_basis`); the basis is
@@ -577,8 +579,10 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         HiGHS threads.
     at_max_lps : {"raise", "end"}
         After ``params.max_lps`` LPs without convergence: raise, or end and return the state
-        with ``stop`` = "max_lps" (:data:`AT_MAX_LPS`). Not part of the checkpoint's key: it
-        changes where a run ends, not its LPs.
+        with ``stop`` = "max_lps" (:data:`AT_MAX_LPS`) -- with a ``final_backend``, after one
+        more LP solved by it (the final phase's first, unless that phase had begun), so the
+        contacts are closed at a vertex. Not part of the checkpoint's key: it changes where a
+        run ends, not its LPs.
 
     Returns
     -------
@@ -632,10 +636,19 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
                     f"TJ did not converge within max_lps = {params.max_lps} LPs (phi = "
                     f"{packing_fraction(positions, box, diameter):.6f}, last relative change "
                     f"{change:.3g} > tolerance {params.tolerance:g})")
+            if params.final_backend and not final:
+                # one LP solved to a vertex before the end: its active rows close the contacts
+                # the interior points left open (~1e-10 D), so a jamming test of the state
+                # reads a closed contact network (module docstring, "Convergence")
+                log.warning("not converged after max_lps = %d LPs (phi = %.6f, last Tr epsilon "
+                            "%.3g): one LP with %s, then the construction ends", params.max_lps,
+                            history["phi"][-1], history["trace"][-1], params.final_backend)
+                final, jammed, trust = True, False, 1.0
+                return False
             stop = "max_lps"
-            log.warning("not converged after max_lps = %d LPs (phi = %.6f, last Tr epsilon %.3g): "
-                        "the construction ends here", params.max_lps, history["phi"][-1],
-                        history["trace"][-1])
+            log.warning("not converged after %d LPs (max_lps = %d; phi = %.6f, last Tr epsilon "
+                        "%.3g): the construction ends here", len(history["phi"]), params.max_lps,
+                        history["phi"][-1], history["trace"][-1])
             return True
         if done:
             if final or not params.final_backend:

@@ -102,6 +102,13 @@ class DiluteTJ:
 #: "dilute" (:class:`DiluteTJ`, then the same polish)
 ROUTES = tuple(MRJ_ROUTE_STAGES)
 
+#: what a polish still compacting after ``polish.max_lps`` LPs does (config key
+#: ``polish.at_max_lps``): "redraw" -- fail, so :func:`make_packing_retrying` discards the start
+#: and draws the next seed (rare at N = 2000: 2 of 13 starts); "end" -- end there (after one
+#: vertex LP when the polish has a ``final_backend``) and keep the packing, whose jamming test
+#: then decides whether it is certified (N = 10 000, where every start creeps: docs/mrj2016.md)
+POLISH_AT_MAX_LPS = ("redraw", "end")
+
 
 @dataclass(frozen=True)
 class MRJProtocol:
@@ -115,19 +122,34 @@ class MRJProtocol:
         max_lps=500, shrink_with_trust=True, backend="highs-ipm"))
     route: str = "dilute"
     dilute: DiluteTJ = field(default_factory=DiluteTJ)
+    #: :data:`POLISH_AT_MAX_LPS`
+    polish_at_max_lps: str = "redraw"
 
     def __post_init__(self):
         if self.route not in ROUTES:
             raise ValueError(f"MRJ route must be one of {ROUTES}, got {self.route!r}")
+        if self.polish_at_max_lps not in POLISH_AT_MAX_LPS:
+            raise ValueError(f"polish.at_max_lps must be one of {POLISH_AT_MAX_LPS}, got "
+                             f"{self.polish_at_max_lps!r}")
 
     @classmethod
     def from_config(cls, section: dict) -> "MRJProtocol":
-        """From the config keys ``route``, ``compression``, ``inflation``, ``dilute`` and ``polish``."""
+        """From the config keys ``route``, ``compression``, ``inflation``, ``dilute`` and ``polish``
+        (whose ``at_max_lps``, "redraw" where absent, is :attr:`polish_at_max_lps`)."""
+        polish = dict(section["polish"])
+        at_max_lps = polish.pop("at_max_lps", "redraw")
         return cls(LSParameters(**section.get("compression", {})),
                    inflation.InflationParameters(**section.get("inflation", {})),
-                   TJParameters(**section["polish"], shrink_with_trust=True),
+                   TJParameters(**polish, shrink_with_trust=True),
                    route=section.get("route", "dilute"),
-                   dilute=DiluteTJ(**section.get("dilute", {})))
+                   dilute=DiluteTJ(**section.get("dilute", {})), polish_at_max_lps=at_max_lps)
+
+    def polish_stage(self, positions, box, **options) -> JammedPacking:
+        """The polish (:func:`randmedia.generate.jammed.jam` with :attr:`polish`) from
+        ``positions`` in ``box``; at ``polish.max_lps`` it raises or ends as
+        :attr:`polish_at_max_lps` says."""
+        return jam(positions, box, self.polish, at_max_lps="end" if self.polish_at_max_lps == "end" else "raise",
+                   **options)
 
     def as_dict(self) -> dict:
         """The constants of the stages the route runs (``MRJ_ROUTE_STAGES``) and the polish's;
@@ -160,6 +182,8 @@ class MRJPacking(JammedPacking):
         attrs["n_inflation_lp"] = self.n_inflation_lp
         attrs["inflation_stop"] = self.inflation_stop
         attrs["n_polish_lp"] = self.n_lp - self.n_inflation_lp - self.n_dilute_lp
+        attrs["polish_at_max_lps"] = self.params.polish_at_max_lps
+        attrs["polish_stop"] = self.stop
         if self.params.route == "dilute":
             attrs["n_dilute_lp"] = self.n_dilute_lp
             attrs["dilute_stop"] = self.dilute_stop
@@ -218,7 +242,8 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
     ------
     ConstructionError
         If the polish does not converge within ``protocol.polish.max_lps``
-        (:func:`randmedia.generate.jammed.jam`); inflation LPs that do not converge within
+        (:func:`randmedia.generate.jammed.jam`) and ``protocol.polish_at_max_lps`` is
+        "redraw" (with "end" the packing is returned, its ``stop`` "max_lps"); inflation LPs that do not converge within
         ``protocol.inflation.max_lps``, and a dilute stage after ``protocol.dilute.max_lps``
         LPs, hand over to the polish instead.
     """
@@ -285,8 +310,8 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
              f"{history['phi'][-1]:.7f}); the polish takes over")
     run.save(arrays)  # a kill in the polish resumes after the inflation
     polish_checkpoint = _polish_checkpoint(checkpoint)
-    packing = _nested_stage(run, lambda: jam(
-        positions, box, protocol.polish, checkpoint=polish_checkpoint,
+    packing = _nested_stage(run, lambda: protocol.polish_stage(
+        positions, box, checkpoint=polish_checkpoint,
         checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds, threads=threads))
     seconds, cpu_seconds = run.seconds, run.cpu_seconds
     run.finish()
@@ -296,7 +321,7 @@ def make_packing(seed: int, n: int, protocol: MRJProtocol = MRJProtocol(), *, di
     return MRJPacking(positions=packing.positions, box=packing.box, diameter=1.0,
                       n_lp=n_inflation + packing.n_lp, seconds=seconds, cpu_seconds=cpu_seconds,
                       lp_seconds=float(np.sum(history["solve_seconds"])) + packing.lp_seconds,
-                      history=packing.history, params=protocol, compression=compression,
+                      history=packing.history, params=protocol, stop=packing.stop, compression=compression,
                       inflation_history={k: np.asarray(v) for k, v in history.items()},
                       n_inflation_lp=n_inflation, inflation_stop=reason)
 
@@ -334,8 +359,8 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
                  "; max_lps reached before the volume rule: the polish takes over")
         run.save({"positions": positions, "box": box, "stop": np.asarray(stop),
                   **{f"history_{k}": np.asarray(v) for k, v in history.items()}})
-    packing = _nested_stage(run, lambda: jam(
-        positions, box, protocol.polish, checkpoint=_polish_checkpoint(checkpoint),
+    packing = _nested_stage(run, lambda: protocol.polish_stage(
+        positions, box, checkpoint=_polish_checkpoint(checkpoint),
         checkpoint_seconds=checkpoint_seconds, log=log, log_seconds=log_seconds, threads=threads))
     seconds, cpu_seconds = run.seconds, run.cpu_seconds
     run.finish()
@@ -345,7 +370,7 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
     return MRJPacking(positions=packing.positions, box=packing.box, diameter=1.0,
                       n_lp=n_dilute + packing.n_lp, seconds=seconds, cpu_seconds=cpu_seconds,
                       lp_seconds=float(np.sum(history["seconds"])) + packing.lp_seconds,
-                      history=packing.history, params=protocol,
+                      history=packing.history, params=protocol, stop=packing.stop,
                       compression={"phi": protocol.dilute.initial_phi},
                       dilute_history={k: np.asarray(v) for k, v in history.items()},
                       n_dilute_lp=n_dilute, dilute_stop=stop)
@@ -385,7 +410,8 @@ def _polish_checkpoint(checkpoint: str | os.PathLike | None) -> Path | None:
 def make_packing_retrying(seeds: Sequence[int], n: int, protocol: MRJProtocol = MRJProtocol(), *,
                           checkpoint: str | os.PathLike | None = None, log: logging.Logger | None = None,
                           **options) -> tuple[MRJPacking, int]:
-    """:func:`make_packing` from ``seeds[0]``; a packing whose polish does not converge within
+    """:func:`make_packing` from ``seeds[0]``; with ``protocol.polish_at_max_lps`` "redraw" (the
+    default) a packing whose polish does not converge within
     ``protocol.polish.max_lps`` (it keeps sliding: the volume still falls, in bursts, after
     hundreds of TJ LPs -- one of the ten paper-config N = 2000 starts, docs/mrj2016.md) is
     discarded and the sample made again from the next seed. An ensemble of packings that jam

@@ -11,6 +11,11 @@ as the first pair it closes (:func:`randmedia.generate.jammed.leave_vertex`), po
 with the same constants and tests again, for at most ``max_rounds`` rounds. The packing
 fraction changes by ~10^-6; the new network is closed by the polish like any other. A
 packing still uncertified after the rounds is returned as it is, counted as such.
+
+A packing whose polish ended at its ``max_lps`` still compacting (``stop`` "max_lps", the
+``polish.at_max_lps`` "end" of :mod:`randmedia.generate.mrj`) is tested but not repaired: the
+repair's premise, a converged polish one unloaded contact short of rigid, does not hold, and
+polishing it again would only go on with the creep its polish was ended in.
 """
 
 from __future__ import annotations
@@ -55,8 +60,9 @@ def certified(packing: JammedPacking, polish: TJParameters, contacts: dict, *,
     Parameters
     ----------
     packing : JammedPacking
-        A converged packing (any subclass: the result is the same class, its positions, cell,
-        LP count, times and polish history extended by the repair's LPs).
+        A polished packing (any subclass: the result is the same class, its positions, cell,
+        LP count, times and polish history extended by the repair's LPs); one ended at
+        ``max_lps`` (``stop``) is only tested (module docstring).
     polish : TJParameters
         The polish constants (the repair polishes with these).
     contacts : dict
@@ -81,6 +87,10 @@ def certified(packing: JammedPacking, polish: TJParameters, contacts: dict, *,
     log = log or logging.getLogger(__name__)
     analysis = jamming.analyse(packing.positions, packing.box, packing.diameter, **contacts)
     steps, lps, cpu = [], 0, 0.0
+    if packing.stop == "max_lps":
+        log.warning("the polish ended at max_lps still compacting: tested (jammed %s), not repaired",
+                    analysis.jammed)
+        max_rounds = 0
     while not analysis.jammed and len(steps) < max_rounds and analysis.motion is not None:
         tic, wall = time.process_time(), time.perf_counter()
         strain, displacement = analysis.motion

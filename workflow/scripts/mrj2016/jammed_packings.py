@@ -41,7 +41,11 @@ for path in snakemake.input.samples:
                     # "max_lps" (handed to the polish); packings made before 2026-12-06 lack it,
                     # and their dilute stages could only converge
                     "dilute_stop": dataset.attrs.get(
-                        "dilute_stop", "converged" if dataset.attrs.get("route_name") == "dilute" else "")})
+                        "dilute_stop", "converged" if dataset.attrs.get("route_name") == "dilute" else ""),
+                    # why the polish ended: "converged" or "max_lps" (polish.at_max_lps "end": then
+                    # tested, not repaired); packings made before 2026-12-06 lack it, and their
+                    # polish could only converge (or the start was redrawn)
+                    "polish_stop": dataset.attrs.get("polish_stop", "converged")})
 table = summary_table(records)
 for _, row in table[table["sample"].isin(["mean", "sem"])].iterrows():
     log.info("%s %s: phi %.5f, z %.4f, rattlers %.4f, Q6 %.4f", row["system"], row["sample"],
