@@ -318,6 +318,35 @@ def test_tj_is_deterministic_and_resumes_bit_for_bit(tmp_path, monkeypatch, back
     np.testing.assert_array_equal(fresh.positions, reference.positions)
 
 
+def test_a_run_resumes_under_a_changed_cap_unless_it_is_past_it(tmp_path, monkeypatch):
+    """max_lps is not part of the checkpoint's key: a run killed after 8 LPs under one cap
+    resumes under another and ends where an uninterrupted run with that cap ends; a cap below
+    the checkpoint's LP count is refused before any LP (a fresh run would have ended sooner)."""
+    start, box = random_sequential_addition(np.random.default_rng(0), 50, 0.25)
+    checkpoint = tmp_path / "state.npz"
+    real_step, calls = jammed.tj_step, itertools.count()
+
+    def dying_step(*args, **kwargs):
+        if next(calls) == 8:
+            raise KeyboardInterrupt("killed")
+        return real_step(*args, **kwargs)
+
+    monkeypatch.setattr(jammed, "tj_step", dying_step)
+    with pytest.raises(KeyboardInterrupt):
+        jammed.jam(start, box, jammed.TJParameters(max_lps=5000), checkpoint=checkpoint, checkpoint_seconds=0.0)
+    monkeypatch.setattr(jammed, "tj_step", real_step)
+    saved = checkpoint.read_bytes()
+    with pytest.raises(ValueError, match="holds 8 LPs .* max_lps = 6"):
+        jammed.jam(start, box, jammed.TJParameters(max_lps=6), checkpoint=checkpoint, at_max_lps="end")
+    assert checkpoint.read_bytes() == saved  # refused, nothing lost
+    capped = jammed.TJParameters(max_lps=12)
+    resumed = jammed.jam(start, box, capped, checkpoint=checkpoint, at_max_lps="end")
+    uninterrupted = jammed.jam(start, box, capped, at_max_lps="end")
+    assert resumed.n_lp == uninterrupted.n_lp == 12 and resumed.stop == "max_lps"
+    np.testing.assert_array_equal(resumed.positions, uninterrupted.positions)
+    assert not checkpoint.exists()
+
+
 def test_carried_basis_keeps_the_status_of_rows_still_listed_and_enters_new_ones_basic():
     previous = packing_lp.LPBasis(col_status=np.array([0, 1, 2], np.int8),
                                   row_status=np.array([2, 1, 0], np.int8),

@@ -162,7 +162,7 @@ def test_killed_run_resumes_from_its_checkpoint(tmp_path, monkeypatch, packing):
     assert not checkpoint.exists()
 
 
-def test_a_dilute_stage_at_max_lps_hands_over_to_the_polish(tmp_path):
+def test_a_dilute_stage_at_max_lps_hands_over_to_the_polish(tmp_path, monkeypatch):
     """A dilute stage still compacting after max_lps LPs is not discarded: the polish takes
     over (as after the inflation stage's cap), certifies the packing and the file says why
     the dilute stage ended."""
@@ -176,6 +176,20 @@ def test_a_dilute_stage_at_max_lps_hands_over_to_the_polish(tmp_path):
     # a kill in the polish: the resumed run still knows why the dilute stage ended
     resumed = made_again_after_a_kill_in_the_polish(2, 100, protocol, tmp_path / "capped.npz")
     assert resumed.dilute_stop == "max_lps" and np.array_equal(resumed.positions, packing.positions)
+    # the cap is not in the checkpoint's key, but a stage it ended is only taken back under
+    # the same cap (a fresh run under another one would end elsewhere)
+    from randmedia.generate import jammed
+
+    checkpoint = tmp_path / "recapped.npz"
+    real_step = jammed.tj_step
+    monkeypatch.setattr(jammed, "tj_step", killed_in_polish_after(0, real_step))
+    with pytest.raises(KeyboardInterrupt):
+        mrj.make_packing(2, 100, protocol, checkpoint=checkpoint, checkpoint_seconds=0.0)
+    monkeypatch.setattr(jammed, "tj_step", real_step)
+    for cap in (20, 40):
+        with pytest.raises(ValueError, match=f"ended \\(max_lps\\) after 30 LPs.*max_lps = {cap}"):
+            mrj.make_packing(2, 100, replace(protocol, dilute=mrj.DiluteTJ(max_lps=cap)), checkpoint=checkpoint)
+    assert checkpoint.exists()
 
 
 def test_a_polish_at_max_lps_ends_and_is_tested_when_so_configured():
@@ -202,9 +216,10 @@ def test_a_polish_at_max_lps_ends_and_is_tested_when_so_configured():
         replace(capped, polish_at_max_lps="keep")
 
 
-def test_the_polish_cap_rule_comes_from_the_config():
+def test_the_cap_rules_come_from_the_config():
     """The paper config: mrj_large's polish ends at its cap, the shared polish (mrj, mrj_md)
-    redraws, with the key absent (so the kept N = 2000 packings' configuration is unchanged)."""
+    redraws, with the key absent (so the kept N = 2000 packings' configuration is unchanged);
+    mrj_large's dilute stage ends at the TJ code's 2000 LPs, the shared one at 5000."""
     from conftest import REPO, SCHEMA
     from randmedia.config import load_config, validate_config
 
@@ -212,10 +227,13 @@ def test_the_polish_cap_rule_comes_from_the_config():
     validate_config(config, SCHEMA)  # what Snakemake sees: the schema's defaults filled in
     section = config["mrj2016"]["mrj"]
     assert "at_max_lps" not in section["polish"]
-    assert mrj.MRJProtocol.from_config(section).polish_at_max_lps == "redraw"
-    large = {**section, "polish": {**section["polish"], **section["mrj_large"]["polish"]}}
+    shared = mrj.MRJProtocol.from_config(section)
+    assert shared.polish_at_max_lps == "redraw" and shared.dilute.max_lps == 5000
+    large = {**section, **{stage: {**section[stage], **section["mrj_large"][stage]} for stage in ("dilute", "polish")}}
     protocol = mrj.MRJProtocol.from_config(large)
     assert protocol.polish_at_max_lps == "end" and protocol.polish.max_lps == 1000
+    # the TJ code's max_iterations (sdatkinson/TJ, test3d/parameters_3d.txt)
+    assert protocol.dilute.max_lps == 2000
 
 
 def test_unconverged_inflation_hands_over_to_the_polish():

@@ -571,8 +571,8 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         D.
     checkpoint : path, optional
         File the state is saved to (at LP boundaries, at most every ``checkpoint_seconds``)
-        and resumed from if it exists and belongs to the same start and parameters; removed
-        on success. Saving, resuming and progress are :class:`randmedia.resumable.ResumableRun`'s.
+        and resumed from if it exists and belongs to the same start and parameters (``max_lps``
+        aside; a file with more LPs than ``max_lps`` is refused: ValueError); removed on success. Saving, resuming and progress are :class:`randmedia.resumable.ResumableRun`'s.
     log, log_seconds
         Progress (LPs, rate, phi, Tr epsilon, rescale, rows, ETA) at most every ``log_seconds``.
     threads : int
@@ -581,8 +581,8 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         After ``params.max_lps`` LPs without convergence: raise, or end and return the state
         with ``stop`` = "max_lps" (:data:`AT_MAX_LPS`) -- with a ``final_backend``, after one
         more LP solved by it (the final phase's first, unless that phase had begun), so the
-        contacts are closed at a vertex. Not part of the checkpoint's key: it changes where a
-        run ends, not its LPs.
+        contacts are closed at a vertex. Neither it nor ``params.max_lps`` is part of the
+        checkpoint's key: they change where a run ends, not its LPs.
 
     Returns
     -------
@@ -612,6 +612,13 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     basis = None  # the optimal basis of the last LP, where its backend gives one
     if state is not None:  # saved at an LP boundary, exactly as the step left it
         positions, box, history, basis = state
+        first_phase = len(history["phi"]) - int(np.sum(history["final"]))
+        if first_phase > params.max_lps:
+            raise ValueError(
+                f"checkpoint {checkpoint} holds {first_phase} LPs before any final phase, more than "
+                f"max_lps = {params.max_lps}: resumed, the run would end past its cap, unlike a fresh "
+                "run. Raise max_lps, resume from a copy with at most max_lps LPs (kept checkpoints "
+                "are in the record's git history), or remove the file to start afresh")
         log.info("resumed from %s after %d LPs (phi = %.6f)", checkpoint, len(history["phi"]),
                  history["phi"][-1] if history["phi"] else float("nan"))
     else:
@@ -752,8 +759,11 @@ def _report(progress, history, dim, max_lps: int) -> None:
 
 
 def _checkpoint_key(positions, box, params, diameter) -> str:
-    """Identifies a construction: its start configuration and constants."""
-    return checkpoint_key(params=asdict(params), diameter=diameter, start=array_digest(positions, box))
+    """Identifies a construction: its start configuration and constants, less ``max_lps``,
+    which changes where a run ends, not its LPs (so a run resumes under a changed cap; one
+    already past a lowered cap is refused by :func:`jam`)."""
+    constants = {name: value for name, value in asdict(params).items() if name != "max_lps"}
+    return checkpoint_key(params=constants, diameter=diameter, start=array_digest(positions, box))
 
 
 def _checkpoint_arrays(positions, box, history, basis: packing_lp.LPBasis | None = None) -> dict:

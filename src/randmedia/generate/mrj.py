@@ -70,9 +70,12 @@ class DiluteTJ:
 
     ``max_lps`` bounds the stage: after that many LPs it ends where it stands and the polish
     takes over, as the TJ code ends after ``max_iterations`` LPs and writes its packing (2000
-    in its example parameters; here 5000, above every N = 2000 stage made so far, 649-1557
-    LPs, so the cap changes none of them; docs/mrj2016.md). The packing's ``dilute_stop``
-    says which rule ended the stage.
+    in its example parameters, the paper config's value at N = 10 000, where no stage ends by
+    the volume rule; the N = 2000 packings were made with 5000, above all their stages,
+    649-1557 LPs, so either cap gives them; docs/mrj2016.md). The packing's ``dilute_stop``
+    says which rule ended the stage. The cap is not part of the stage's checkpoint key (it
+    changes where the stage ends, not its LPs): a stage resumes under a changed cap unless it
+    is already past it.
 
     Strain bounds: the code multiplies every length-like constant by the diameter of its
     unit-cell start, the strain bounds ``comp_max`` = ``shear_max`` = 0.1 included, so its
@@ -335,14 +338,24 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
     the packing strictly jammed at the LP's precision. A checkpoint is saved after the dilute
     stage, so a kill in the polish does not repeat it."""
     # the state saved here is the dilute stage's result: it depends on that stage alone (the
-    # polish resumes from its own checkpoint)
-    key = checkpoint_key(seed=int(seed), n=int(n), dim=int(dim), dilute=asdict(protocol.dilute))
+    # polish resumes from its own checkpoint), and on its cap max_lps only through its LP count
+    # (checked below), so the cap is not part of the key, as in jam's
+    constants = {name: value for name, value in asdict(protocol.dilute).items() if name != "max_lps"}
+    key = checkpoint_key(seed=int(seed), n=int(n), dim=int(dim), dilute=constants)
     run = ResumableRun(checkpoint, key, log, checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
     state = run.resume(lambda data: (data["positions"], data["box"],
                                      {k[len("history_"):]: v for k, v in data.items() if k.startswith("history_")},
                                      str(data["stop"]) if "stop" in data else "converged"))
     if state is not None:
         positions, box, history, stop = state
+        lps, cap = len(history["phi"]), protocol.dilute.max_lps
+        # what a fresh run under this cap makes: a stage that converged within it, or one that
+        # the same cap ended
+        if lps > cap or (stop == "max_lps" and lps != cap):
+            raise ValueError(
+                f"checkpoint {checkpoint} holds a dilute stage that ended ({stop}) after {lps} LPs, "
+                f"which dilute.max_lps = {cap} would not give: set the cap it ran with, or remove "
+                "the file to start afresh")
         log.info("resumed from %s after the dilute TJ stage (%d LPs)", checkpoint, len(history["phi"]))
     else:
         start, start_box = random_sequential_addition(np.random.default_rng(seed), n,
