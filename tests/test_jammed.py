@@ -407,12 +407,16 @@ def test_unconverged_construction_raises():
         jammed.jam(start, box, jammed.TJParameters(max_lps=5))
 
 
-def test_unconverged_construction_can_end_at_max_lps_instead():
+def test_unconverged_construction_can_end_at_max_lps_instead(caplog):
     """at_max_lps="end": the run stops after max_lps LPs and returns that state, marked
-    "max_lps" -- the same positions as a run with a larger cap has after as many LPs."""
+    "max_lps" (and so logged) -- the same positions as a run with a larger cap has after as
+    many LPs."""
     start, box = random_sequential_addition(np.random.default_rng(0), 50, 0.25)
-    ended = jammed.jam(start, box, jammed.TJParameters(max_lps=5), at_max_lps="end")
+    with caplog.at_level("INFO"):
+        ended = jammed.jam(start, box, jammed.TJParameters(max_lps=5), at_max_lps="end")
     assert ended.stop == "max_lps" and ended.n_lp == 5 and ended.phi > 0.26
+    assert "ended at max_lps after 5 LPs" in caplog.text
+    assert not any(record.getMessage().startswith("converged") for record in caplog.records)
     longer = jammed.jam(start, box, jammed.TJParameters(max_lps=5000))
     assert longer.stop == "converged" and longer.n_lp > 5
     np.testing.assert_array_equal(ended.history["phi"], longer.history["phi"][:5])

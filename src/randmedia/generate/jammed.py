@@ -725,7 +725,8 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
         _report(progress, history, dim, params.max_lps)
 
     run.loop(step, finished, lambda: _checkpoint_arrays(positions, box, history, basis))
-    log.info("converged after %d LPs in %.1f s (%.1f s CPU): phi = %.6f", len(history["phi"]),
+    log.info("%s after %d LPs in %.1f s (%.1f s CPU): phi = %.6f",
+             "converged" if stop == "converged" else "ended at max_lps", len(history["phi"]),
              run.seconds, run.cpu_seconds, history["phi"][-1])
     run.finish()
     return JammedPacking(positions=positions, box=box, diameter=diameter, n_lp=len(history["phi"]),
