@@ -25,6 +25,19 @@ SCHEMA = REPO / "workflow" / "schemas" / "config.schema.yaml"
 WORKFLOW_PARTS = ("Snakefile", "workflow", "config", "profiles", "src")
 
 
+def killed_after(calls: int, step):
+    """``step``, but raising KeyboardInterrupt (a kill) on its call number ``calls`` + 1."""
+    done = {"n": 0}
+
+    def dying_step(*args, **kwargs):
+        done["n"] += 1
+        if done["n"] > calls:
+            raise KeyboardInterrupt("killed")
+        return step(*args, **kwargs)
+
+    return dying_step
+
+
 def quick_config(workdir: Path = REPO) -> dict:
     """The quick config as Snakemake sees it: config/quick.yaml merged over config/config.yaml
     (before schema defaults are filled in)."""

@@ -11,7 +11,6 @@ that bound, so the mean contact number of the non-rattlers is 2 M / N_b =
 
 from __future__ import annotations
 
-import itertools
 from dataclasses import replace
 from pathlib import Path
 
@@ -19,6 +18,7 @@ import numpy as np
 import pytest
 import xarray as xr
 
+from conftest import killed_after
 from randmedia.describe import bond_order, jamming
 from randmedia.generate import jammed, packing_lp
 from randmedia.generate.rsa import RSA_SATURATION, random_sequential_addition
@@ -294,14 +294,8 @@ def test_tj_is_deterministic_and_resumes_bit_for_bit(tmp_path, monkeypatch, back
     np.testing.assert_array_equal(reference.box, again.box)
     # a run killed after 20 LPs (state saved at every LP boundary) and resumed
     checkpoint = tmp_path / "state.npz"
-    real_step, calls = jammed.tj_step, itertools.count()
-
-    def dying_step(*args, **kwargs):
-        if next(calls) == 20:
-            raise KeyboardInterrupt("killed")
-        return real_step(*args, **kwargs)
-
-    monkeypatch.setattr(jammed, "tj_step", dying_step)
+    real_step = jammed.tj_step
+    monkeypatch.setattr(jammed, "tj_step", killed_after(20, real_step))
     with pytest.raises(KeyboardInterrupt):
         jammed.jam(start, box, params, checkpoint=checkpoint, checkpoint_seconds=0.0)
     assert checkpoint.is_file()
@@ -324,14 +318,8 @@ def test_a_run_resumes_under_a_changed_cap_unless_it_is_past_it(tmp_path, monkey
     the checkpoint's LP count is refused before any LP (a fresh run would have ended sooner)."""
     start, box = random_sequential_addition(np.random.default_rng(0), 50, 0.25)
     checkpoint = tmp_path / "state.npz"
-    real_step, calls = jammed.tj_step, itertools.count()
-
-    def dying_step(*args, **kwargs):
-        if next(calls) == 8:
-            raise KeyboardInterrupt("killed")
-        return real_step(*args, **kwargs)
-
-    monkeypatch.setattr(jammed, "tj_step", dying_step)
+    real_step = jammed.tj_step
+    monkeypatch.setattr(jammed, "tj_step", killed_after(8, real_step))
     with pytest.raises(KeyboardInterrupt):
         jammed.jam(start, box, jammed.TJParameters(max_lps=5000), checkpoint=checkpoint, checkpoint_seconds=0.0)
     monkeypatch.setattr(jammed, "tj_step", real_step)

@@ -15,6 +15,7 @@ from dataclasses import replace
 import numpy as np
 import pytest
 
+from conftest import killed_after
 from randmedia.describe import bond_order, jamming
 from randmedia.generate import inflation, mrj
 from randmedia.generate.jammed import ConstructionError, packing_dataset, packing_fraction
@@ -126,19 +127,6 @@ def test_same_seed_same_packing(packing, tmp_path):
     for name in first.variables:
         np.testing.assert_array_equal(first[name].values, second[name].values, err_msg=name)
     assert len(first.attrs["lp_solve_seconds"]) == packing.n_lp
-
-
-def killed_after(calls: int, step):
-    """``step``, but raising KeyboardInterrupt (a kill) on its call number ``calls`` + 1."""
-    done = {"n": 0}
-
-    def dying_step(*args, **kwargs):
-        done["n"] += 1
-        if done["n"] > calls:
-            raise KeyboardInterrupt("killed")
-        return step(*args, **kwargs)
-
-    return dying_step
 
 
 def test_killed_run_resumes_from_its_checkpoint(tmp_path, monkeypatch, packing):

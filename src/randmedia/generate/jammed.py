@@ -572,7 +572,8 @@ def jam(positions: np.ndarray, box: np.ndarray, params: TJParameters = TJParamet
     checkpoint : path, optional
         File the state is saved to (at LP boundaries, at most every ``checkpoint_seconds``)
         and resumed from if it exists and belongs to the same start and parameters (``max_lps``
-        aside; a file with more LPs than ``max_lps`` is refused: ValueError); removed on success. Saving, resuming and progress are :class:`randmedia.resumable.ResumableRun`'s.
+        aside; a file with more LPs than ``max_lps`` is refused: ValueError); removed on
+        success. Saving, resuming and progress are :class:`randmedia.resumable.ResumableRun`'s.
     log, log_seconds
         Progress (LPs, rate, phi, Tr epsilon, rescale, rows, ETA) at most every ``log_seconds``.
     threads : int
@@ -759,12 +760,18 @@ def _report(progress, history, dim, max_lps: int) -> None:
 # --------------------------------------------------------------------------- checkpoints
 
 
+def constants_without_cap(params) -> dict:
+    """A stage's constants (a dataclass with a ``max_lps``) as its checkpoint key holds them:
+    less ``max_lps``, which changes where a run ends, not its LPs (so a run resumes under a
+    changed cap; one already past a lowered cap is refused by the stage)."""
+    return {name: value for name, value in asdict(params).items() if name != "max_lps"}
+
+
 def _checkpoint_key(positions, box, params, diameter) -> str:
-    """Identifies a construction: its start configuration and constants, less ``max_lps``,
-    which changes where a run ends, not its LPs (so a run resumes under a changed cap; one
-    already past a lowered cap is refused by :func:`jam`)."""
-    constants = {name: value for name, value in asdict(params).items() if name != "max_lps"}
-    return checkpoint_key(params=constants, diameter=diameter, start=array_digest(positions, box))
+    """Identifies a construction: its start configuration and constants
+    (:func:`constants_without_cap`)."""
+    return checkpoint_key(params=constants_without_cap(params), diameter=diameter,
+                          start=array_digest(positions, box))
 
 
 def _checkpoint_arrays(positions, box, history, basis: packing_lp.LPBasis | None = None) -> dict:

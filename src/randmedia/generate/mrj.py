@@ -46,8 +46,9 @@ import numpy as np
 from randmedia.checkpoint import checkpoint_key
 from randmedia.config import MRJ_ROUTE_STAGES
 from randmedia.generate import inflation, packing_lp
-from randmedia.generate.jammed import (ConstructionError, JammedPacking, TJParameters, jam,
-                                       packing_fraction, tj_lp_history, validate_packing_input)
+from randmedia.generate.jammed import (ConstructionError, JammedPacking, TJParameters,
+                                       constants_without_cap, jam, packing_fraction,
+                                       tj_lp_history, validate_packing_input)
 from randmedia.generate.lubachevsky_stillinger import LSParameters, compress
 from randmedia.generate.rsa import random_sequential_addition
 from randmedia.theory.balls import ball_volume
@@ -340,8 +341,7 @@ def _make_packing_dilute(seed: int, n: int, protocol: MRJProtocol, *, dim: int, 
     # the state saved here is the dilute stage's result: it depends on that stage alone (the
     # polish resumes from its own checkpoint), and on its cap max_lps only through its LP count
     # (checked below), so the cap is not part of the key, as in jam's
-    constants = {name: value for name, value in asdict(protocol.dilute).items() if name != "max_lps"}
-    key = checkpoint_key(seed=int(seed), n=int(n), dim=int(dim), dilute=constants)
+    key = checkpoint_key(seed=int(seed), n=int(n), dim=int(dim), dilute=constants_without_cap(protocol.dilute))
     run = ResumableRun(checkpoint, key, log, checkpoint_seconds=checkpoint_seconds, log_seconds=log_seconds)
     state = run.resume(lambda data: (data["positions"], data["box"],
                                      {k[len("history_"):]: v for k, v in data.items() if k.startswith("history_")},

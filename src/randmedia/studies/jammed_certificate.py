@@ -86,11 +86,11 @@ def certified(packing: JammedPacking, polish: TJParameters, contacts: dict, *,
     """
     log = log or logging.getLogger(__name__)
     analysis = jamming.analyse(packing.positions, packing.box, packing.diameter, **contacts)
-    steps, lps, cpu = [], 0, 0.0
     if packing.stop == "max_lps":
         log.warning("the polish ended at max_lps still compacting: tested (jammed %s), not repaired",
                     analysis.jammed)
-        max_rounds = 0
+        return packing, analysis, Repair()
+    steps, lps, cpu = [], 0, 0.0
     while not analysis.jammed and len(steps) < max_rounds and analysis.motion is not None:
         tic, wall = time.process_time(), time.perf_counter()
         strain, displacement = analysis.motion
