@@ -219,7 +219,7 @@ def test_the_cap_rules_come_from_the_config():
     assert shared.polish_at_max_lps == "redraw" and shared.dilute.max_lps == 5000
     large = {**section, **{stage: {**section[stage], **section["mrj_large"][stage]} for stage in ("dilute", "polish")}}
     protocol = mrj.MRJProtocol.from_config(large)
-    assert protocol.polish_at_max_lps == "end" and protocol.polish.max_lps == 1000
+    assert protocol.polish_at_max_lps == "end" and protocol.polish.max_lps == 750
     # the TJ code's max_iterations (sdatkinson/TJ, test3d/parameters_3d.txt)
     assert protocol.dilute.max_lps == 2000
 
