@@ -123,3 +123,35 @@ def test_phi_of_one_large_packing_takes_its_sem_from_the_smaller_ensemble():
     assert (mean, note) == (pytest.approx(0.6365), "") and sem == pytest.approx(0.0005)
     assert math.isnan(phi_mean_sem(None, small)[0])
     assert math.isnan(phi_mean_sem(ensemble([0.637], 10000), None)[1])
+
+
+def test_fig6_label_is_compared_where_the_large_packings_are_made(monkeypatch, tmp_path):
+    """The N = 10 000 packings' phi against Fig. 6's label 0.637, which the transcribed quoted
+    numbers leave out: one row when mrj_large has samples (its SEM from the N = 2000 ensemble),
+    none when it has none; a packing off by 3e-3 fails."""
+    import xarray as xr
+
+    from randmedia.compare import comparison_frame
+    from randmedia.compare import mrj2016 as compare_mrj
+
+    def ensemble(phis, n):
+        return xr.Dataset({"eta": ("sample", phis), "n": ("sample", [n] * len(phis))})
+
+    reference = tmp_path / "quoted.csv"
+    reference.write_text("quantity,system,value,unit,where\n")
+    data = {("correlation", "mrj"): ensemble([0.634, 0.636, 0.635], 2000)}
+    monkeypatch.setattr(compare_mrj, "_load", lambda inputs, kind, system: data.get((kind, system)))
+
+    def rows(phi_large, n_large):
+        data[("spectral", "mrj_large")] = ensemble([phi_large], 10000)
+        collected = compare_mrj.Rows(k_sigma=3.0)
+        compare_mrj._quoted_rows(collected, reference, {}, {"n_samples": {"mrj": 3, "mrj_large": n_large}})
+        return comparison_frame(collected.rows)
+
+    assert rows(0.6373, 0).empty
+    frame = rows(0.6373, 1)
+    assert frame[["quantity", "key"]].values.tolist() == [["packing_fraction", "mrj_large"]]
+    assert frame["published"].iloc[0] == 0.637 and frame["ours"].iloc[0] == 0.6373
+    assert frame["ours_sem"].iloc[0] == pytest.approx(0.001 * math.sqrt(0.2))
+    assert frame["passed"].iloc[0]
+    assert not rows(0.640, 1)["passed"].iloc[0]
