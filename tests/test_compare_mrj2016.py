@@ -104,46 +104,43 @@ def test_eq11_note_of_one_sample_says_it_has_no_sem():
     assert _eq11_note(two, 9.0).endswith("1.5e-05 +- 1e-06 D^3 at this kD")
 
 
+def _phi_ensemble(phis, n):
+    """Packings of n spheres with packing fractions phis (what phi_mean_sem reads)."""
+    import xarray as xr
+
+    return xr.Dataset({"eta": ("sample", phis), "n": ("sample", [n] * len(phis))})
+
+
 def test_phi_of_one_large_packing_takes_its_sem_from_the_smaller_ensemble():
     """The Fig. 6 row (N = 10 000, phi = 0.637): with one packing its SEM is the SD of the
     N = 2000 ensemble scaled by (2000 / 10 000)^(1/2), and the note says so; with two or more,
     the SEM over the packings themselves."""
-    import xarray as xr
-
     from randmedia.compare.mrj2016 import phi_mean_sem
 
-    def ensemble(phis, n):
-        return xr.Dataset({"eta": ("sample", phis), "n": ("sample", [n] * len(phis))})
-
-    small = ensemble([0.634, 0.636, 0.635], 2000)
-    mean, sem, note = phi_mean_sem(ensemble([0.6370], 10000), small)
+    small = _phi_ensemble([0.634, 0.636, 0.635], 2000)
+    mean, sem, note = phi_mean_sem(_phi_ensemble([0.6370], 10000), small)
     assert mean == 0.6370 and sem == pytest.approx(0.001 * math.sqrt(0.2))
     assert "one sample" in note and "0.00045" in note
-    mean, sem, note = phi_mean_sem(ensemble([0.6370, 0.6360], 10000), small)
+    mean, sem, note = phi_mean_sem(_phi_ensemble([0.6370, 0.6360], 10000), small)
     assert (mean, note) == (pytest.approx(0.6365), "") and sem == pytest.approx(0.0005)
     assert math.isnan(phi_mean_sem(None, small)[0])
-    assert math.isnan(phi_mean_sem(ensemble([0.637], 10000), None)[1])
+    assert math.isnan(phi_mean_sem(_phi_ensemble([0.637], 10000), None)[1])
 
 
 def test_fig6_label_is_compared_where_the_large_packings_are_made(monkeypatch, tmp_path):
     """The N = 10 000 packings' phi against Fig. 6's label 0.637, which the transcribed quoted
     numbers leave out: one row when mrj_large has samples (its SEM from the N = 2000 ensemble),
     none when it has none; a packing off by 3e-3 fails."""
-    import xarray as xr
-
     from randmedia.compare import comparison_frame
     from randmedia.compare import mrj2016 as compare_mrj
 
-    def ensemble(phis, n):
-        return xr.Dataset({"eta": ("sample", phis), "n": ("sample", [n] * len(phis))})
-
     reference = tmp_path / "quoted.csv"
     reference.write_text("quantity,system,value,unit,where\n")
-    data = {("correlation", "mrj"): ensemble([0.634, 0.636, 0.635], 2000)}
+    data = {("correlation", "mrj"): _phi_ensemble([0.634, 0.636, 0.635], 2000)}
     monkeypatch.setattr(compare_mrj, "_load", lambda inputs, kind, system: data.get((kind, system)))
 
     def rows(phi_large, n_large):
-        data[("spectral", "mrj_large")] = ensemble([phi_large], 10000)
+        data[("spectral", "mrj_large")] = _phi_ensemble([phi_large], 10000)
         collected = compare_mrj.Rows(k_sigma=3.0)
         compare_mrj._quoted_rows(collected, reference, {}, {"n_samples": {"mrj": 3, "mrj_large": n_large}})
         return comparison_frame(collected.rows)

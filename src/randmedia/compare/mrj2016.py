@@ -48,7 +48,7 @@ PAPER_PHI = {"equilibrium": 0.4780, "mrj": 0.6356, "mrj_large": 0.637}
 #: (config/reference/, a cell-by-cell copy of the published CSV) leave out: compared like them,
 #: where this workflow makes the system (``_quoted_rows``)
 FIGURE_LABELS = pd.DataFrame([
-    {"quantity": "packing_fraction", "system": "mrj_large", "value": "0.637", "unit": "1",
+    {"quantity": "packing_fraction", "system": "mrj_large", "value": f"{PAPER_PHI['mrj_large']:g}", "unit": "1",
      "where": "Fig. 6 label (MRJ panel: the 14 packings of N = 10 000)"},
 ])
 #: Gaussianity criterion of f_R(N) (see gaussian_radius)
