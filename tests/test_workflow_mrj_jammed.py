@@ -130,6 +130,23 @@ def test_packings_table_matches_the_files(jammed_run, section):
         assert row["certified_gap_tolerance"] == pytest.approx(section["contacts"]["gap_tolerance"])
 
 
+def test_each_packing_has_its_certificate(jammed_run, section):
+    """One certificate per packing (rule mrj2016_packing_certificate): the test repeated at the
+    configured gap tolerance gives the packing's stored outcome and network, so the quick
+    packings (all jammed) stop at that first rung."""
+    for system, k, path in packing_files(jammed_run, section):
+        certificate = pd.read_csv(path.with_name(f"sample{k}.certificate.csv"))
+        attrs = read_dataset(path).attrs
+        assert len(certificate) == 1, (system, k)
+        first = certificate.iloc[0]
+        assert first["gap_tolerance"] == pytest.approx(section["contacts"]["gap_tolerance"])
+        assert bool(first["jammed"]) == bool(attrs["jammed"]) is True
+        assert first["n_pairs"] == attrs["n_contacts"]
+        assert first["isostatic_excess"] == attrs["isostatic_excess"] == 0
+        assert first["n_backbone"] == round(attrs["n_particles"] * (1 - attrs["rattler_fraction"]))
+        assert first["min_force_ratio"] > 0 and first["cpu_seconds"] > 0
+
+
 def test_every_packing_is_kept_and_taken_back_instead_of_regenerated(jammed_run, section, tmp_path):
     """Each packing job keeps a copy beside the record (here the quick config's
     {results}/record/packings/mrj2016/ when certified, .../mrj2016_uncertified/ otherwise); a job

@@ -18,9 +18,9 @@ MRJ_PACKING = results_path("mrj2016/configs/{system}/sample{k}.nc")
 #: packings (1652-8037 s; docs/mrj2016.md, "Routes compared")
 MRJ_PACKING_CPU_SECONDS = 3394
 #: how that CPU grows with N, taken as N^2 (HiPO TJ LP ~N^1.6, dilute LP count ~N^0.4): 24 CPU h at
-#: N = 10 000, an upper bound -- the first N = 10 000 packing's measured parts predict ~10-20 CPU h
-#: (docs/mrj2016.md, "N = 10 000"); a job killed at a queue's time limit resumes from the
-#: packing's checkpoint when Snakemake runs it again
+#: N = 10 000, the runtime request 3x that; the first N = 10 000 packing took 33.4 CPU h (both of
+#: its stages ended at their LP caps; docs/mrj2016.md, "N = 10 000"); a job killed at a queue's
+#: time limit resumes from the packing's checkpoint when Snakemake runs it again
 MRJ_PACKING_CPU_EXPONENT = 2.0
 MRJ_SAMPLES = expand(MRJ_PACKING, system="mrj", k=range(MRJ_JAMMED["mrj"]["n_samples"]))
 MRJ_LARGE_SAMPLES = expand(MRJ_PACKING, system="mrj_large",
@@ -29,6 +29,14 @@ MRJ_MD_SAMPLES = expand(MRJ_PACKING, system="mrj_md", k=range(MRJ_JAMMED["mrj_md
 #: the jammed systems of the section mrj2016.mrj
 MRJ_JAMMED_SYSTEMS = ("mrj", "mrj_large", "mrj_md")
 MRJ_PACKINGS_TABLE = results_path("mrj2016/packings.csv")
+#: the contact-gap ladder of one packing (rule mrj2016_packing_certificate)
+MRJ_CERTIFICATE = results_path("mrj2016/configs/{system}/sample{k}.certificate.csv")
+
+
+def certificate_of(packing):
+    """The certificate file of the packing file ``packing`` (sample{k}.nc -> sample{k}.certificate.csv)."""
+    return packing[:-len(".nc")] + ".certificate.csv"
+
 JAMMED_TARGETS = [MRJ_PACKINGS_TABLE]
 
 
@@ -77,17 +85,42 @@ rule mrj2016_jammed_packing:
         "../scripts/mrj2016/jammed_packing.py"
 
 
+rule mrj2016_packing_certificate:
+    """The strict-jamming test of one packing at the configured contact gap tolerance, then at
+    10x, 100x, ... up to 1e-4 D until it passes: one row per rung (its certified gap tolerance)."""
+    input:
+        packing=MRJ_PACKING,
+        code=script_sources("../scripts/mrj2016/packing_certificate.py"),
+    output:
+        MRJ_CERTIFICATE,
+    wildcard_constraints:
+        system="|".join(MRJ_JAMMED_SYSTEMS),
+    params:
+        contacts=lambda wildcards: mrj_stage(MRJ_JAMMED, wildcards.system, "contacts"),
+    benchmark:
+        results_path("mrj2016/benchmarks/packing_certificate_{system}_sample{k}.tsv")
+    log:
+        results_path("mrj2016/logs/packing_certificate_{system}_sample{k}.log"),
+    threads: 1
+    resources:
+        # the jamming test's sparse LU of B^T B, as in the packing rule: ~2.5 GB at 10 000 spheres
+        mem_mb=lambda wildcards: int(500 + 2500 * (MRJ_JAMMED[wildcards.system]["n_particles"] / 10000) ** 1.5),
+        # minutes: an uncertified N = 10 000 packing's ladder took 42 min (two rungs with a backbone)
+        runtime=lambda wildcards: max(10, int(120 * (MRJ_JAMMED[wildcards.system]["n_particles"] / 10000) ** 2)),
+    script:
+        "../scripts/mrj2016/packing_certificate.py"
+
+
 rule mrj2016_packings:
     """packings.csv: phi, mean contact number, rattler fraction, Q6, crystal-like fraction,
     jamming test, certified gap tolerance and cost of every packing, with mean and SEM per
     system."""
     input:
         samples=MRJ_SAMPLES + MRJ_LARGE_SAMPLES + MRJ_MD_SAMPLES,
+        certificates=[certificate_of(path) for path in MRJ_SAMPLES + MRJ_LARGE_SAMPLES + MRJ_MD_SAMPLES],
         code=script_sources("../scripts/mrj2016/jammed_packings.py"),
     output:
         MRJ_PACKINGS_TABLE,
-    params:
-        contacts={system: mrj_stage(MRJ_JAMMED, system, "contacts") for system in MRJ_JAMMED_SYSTEMS},
     benchmark:
         results_path("mrj2016/benchmarks/packings.tsv")
     log:

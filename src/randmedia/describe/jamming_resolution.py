@@ -17,8 +17,62 @@ is shorter than ~1e-6 D. NaN: not certified up to ``max_tolerance``.
 from __future__ import annotations
 
 import math
+import time
+
+import numpy as np
 
 from randmedia.describe.jamming import analyse
+
+
+#: columns of :func:`gap_ladder`'s rows (the certificate file of a packing)
+LADDER_COLUMNS = ("gap_tolerance", "n_pairs", "n_backbone", "isostatic_excess", "min_trace",
+                  "min_force_ratio", "rank_ratio", "jammed", "cpu_seconds")
+
+
+def _ladder_tolerances(gap_tolerance: float, max_tolerance: float, first_rung: int) -> list[float]:
+    """``gap_tolerance x 10^m`` for m = ``first_rung`` ... while <= ``max_tolerance``."""
+    if not 0 < gap_tolerance <= max_tolerance < 0.1:
+        raise ValueError(f"need 0 < gap_tolerance ({gap_tolerance}) <= max_tolerance "
+                         f"({max_tolerance}) < 0.1 D")
+    steps = int(math.floor(math.log10(max_tolerance / gap_tolerance) + 1e-9))
+    return [gap_tolerance * 10.0 ** m for m in range(first_rung, steps + 1)]
+
+
+def gap_ladder(positions, box, diameter: float = 1.0, *, gap_tolerance: float = 1e-9,
+               max_tolerance: float = 1e-4, first_rung: int = 0, **analyse_options) -> list[dict]:
+    """The strict-jamming test on each rung ``gap_tolerance x 10^m <= max_tolerance``
+    (m = ``first_rung``, ...), up to the first rung where it passes (module docstring).
+
+    Parameters are those of :func:`certified_gap_tolerance`.
+
+    Returns
+    -------
+    list of dict
+        One row per rung tried, with :data:`LADDER_COLUMNS`: the tolerance (fraction of D);
+        the pairs closer than it; the backbone spheres (non-rattlers, 0 when fewer than 2) and
+        their isostatic excess M - [d (N_b - 1) + d (d + 1) / 2] (None without a backbone);
+        min Tr epsilon over the cone, the smallest backbone force over the mean and
+        lambda_min / lambda_max of B^T B (None without a backbone); whether the test passed;
+        the CPU seconds of the rung. Only the last row can have ``jammed`` True.
+    """
+    positions = np.asarray(positions, dtype=float)
+    rows = []
+    for tolerance in _ladder_tolerances(gap_tolerance, max_tolerance, first_rung):
+        tic = time.process_time()
+        analysis = analyse(positions, box, diameter, gap_tolerance=tolerance, **analyse_options)
+        has_backbone = analysis.n_backbone >= 2
+        forces = analysis.forces[analysis.backbone_contacts]
+        rows.append({
+            "gap_tolerance": tolerance, "n_pairs": len(analysis.network.i),
+            "n_backbone": analysis.n_backbone if has_backbone else 0,
+            "isostatic_excess": analysis.isostatic_excess if has_backbone else None,
+            "min_trace": analysis.min_trace if has_backbone else None,
+            "min_force_ratio": float(forces.min() / forces.mean()) if has_backbone and forces.size else None,
+            "rank_ratio": analysis.rank_ratio if has_backbone else None,
+            "jammed": bool(analysis.jammed), "cpu_seconds": time.process_time() - tic})
+        if analysis.jammed:
+            break
+    return rows
 
 
 def certified_gap_tolerance(positions, box, diameter: float = 1.0, *,
@@ -53,12 +107,13 @@ def certified_gap_tolerance(positions, box, diameter: float = 1.0, *,
     float
         The certified gap tolerance (fraction of D), NaN if none up to ``max_tolerance``.
     """
-    if not 0 < gap_tolerance <= max_tolerance < 0.1:
-        raise ValueError(f"need 0 < gap_tolerance ({gap_tolerance}) <= max_tolerance "
-                         f"({max_tolerance}) < 0.1 D")
-    steps = int(math.floor(math.log10(max_tolerance / gap_tolerance) + 1e-9))
-    for m in range(first_rung, steps + 1):
-        tolerance = gap_tolerance * 10.0 ** m
-        if analyse(positions, box, diameter, gap_tolerance=tolerance, **analyse_options).jammed:
-            return tolerance
-    return math.nan
+    return certified_from_ladder(gap_ladder(positions, box, diameter, gap_tolerance=gap_tolerance,
+                                            max_tolerance=max_tolerance, first_rung=first_rung,
+                                            **analyse_options))
+
+
+def certified_from_ladder(rows) -> float:
+    """The tolerance of the rung where the test passed (:func:`gap_ladder`'s rows, or a
+    certificate file's), NaN if none did."""
+    passed = [float(row["gap_tolerance"]) for row in rows if bool(row["jammed"])]
+    return min(passed) if passed else math.nan

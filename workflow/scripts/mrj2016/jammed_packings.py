@@ -2,34 +2,28 @@
 
 Besides the attributes the packing rule stored, each row has ``certified_gap_tolerance``:
 the smallest contact gap tolerance (configured value x 10^m, up to 1e-4 D) at which the
-packing passes the strict-jamming test (randmedia.describe.jamming_resolution), and
+packing passes the strict-jamming test, from the packing's certificate file (rule
+mrj2016_packing_certificate, randmedia.describe.jamming_resolution), and
 ``cpu_seconds``, the CPU its construction took (the packing's attribute: a kept packing's is
 that of the run that made it). Only the per-system mean and SEM of the summary columns are
 added (randmedia.describe.jamming.summary_table).
 """
-from pathlib import Path
-
 from randmedia.jobs import start_job
 
 log = start_job(snakemake)
 
+import pandas as pd
+
 from randmedia.describe.jamming import PACKING_ATTRS, summary_table
-from randmedia.describe.jamming_resolution import certified_gap_tolerance
+from randmedia.describe.jamming_resolution import certified_from_ladder
 from randmedia.io import read_dataset, write_csv
 
 records = []
-for path in snakemake.input.samples:
-    # the system's jamming-test constants (configs/{system}/sample{k}.nc)
-    contacts = dict(snakemake.params.contacts[Path(path).parent.name])
+for path, certificate in zip(snakemake.input.samples, snakemake.input.certificates, strict=True):
     dataset = read_dataset(path, attrs=PACKING_ATTRS + ("diameter", "cpu_seconds"))
-    # the packing rule stored the test at the configured tolerance (same contact options) as `jammed`
-    if dataset.attrs["jammed"]:
-        certified = contacts["gap_tolerance"]
-    else:
-        certified = certified_gap_tolerance(dataset["position"].values, dataset["box"].values,
-                                            float(dataset.attrs["diameter"]), first_rung=1, **contacts)
-    log.info("%s: jammed at gap tolerance %g: %d; certified from %g", path,
-             contacts["gap_tolerance"], dataset.attrs["jammed"], certified)
+    certified = certified_from_ladder(pd.read_csv(certificate).to_dict("records"))
+    log.info("%s: jammed at the configured gap tolerance: %d; certified from %g", path,
+             dataset.attrs["jammed"], certified)
     # attempt: which seed made it (0 = the sample's own; packings made before redraws existed lack it)
     records.append({"file": str(path), **{key: dataset.attrs[key] for key in PACKING_ATTRS},
                     "cpu_seconds": float(dataset.attrs["cpu_seconds"]),
