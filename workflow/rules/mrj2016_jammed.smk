@@ -29,13 +29,8 @@ MRJ_MD_SAMPLES = expand(MRJ_PACKING, system="mrj_md", k=range(MRJ_JAMMED["mrj_md
 #: the jammed systems of the section mrj2016.mrj
 MRJ_JAMMED_SYSTEMS = ("mrj", "mrj_large", "mrj_md")
 MRJ_PACKINGS_TABLE = results_path("mrj2016/packings.csv")
-#: the contact-gap ladder of one packing (rule mrj2016_packing_certificate)
+#: the contact-gap ladder of one packing (rule mrj2016_packing_certificate), beside the packing
 MRJ_CERTIFICATE = results_path("mrj2016/configs/{system}/sample{k}.certificate.csv")
-
-
-def certificate_of(packing):
-    """The certificate file of the packing file ``packing`` (sample{k}.nc -> sample{k}.certificate.csv)."""
-    return packing[:-len(".nc")] + ".certificate.csv"
 
 JAMMED_TARGETS = [MRJ_PACKINGS_TABLE]
 
@@ -117,7 +112,9 @@ rule mrj2016_packings:
     system."""
     input:
         samples=MRJ_SAMPLES + MRJ_LARGE_SAMPLES + MRJ_MD_SAMPLES,
-        certificates=[certificate_of(path) for path in MRJ_SAMPLES + MRJ_LARGE_SAMPLES + MRJ_MD_SAMPLES],
+        # sample{k}.nc -> sample{k}.certificate.csv, in the same order
+        certificates=[path.removesuffix(".nc") + ".certificate.csv"
+                      for path in MRJ_SAMPLES + MRJ_LARGE_SAMPLES + MRJ_MD_SAMPLES],
         code=script_sources("../scripts/mrj2016/jammed_packings.py"),
     output:
         MRJ_PACKINGS_TABLE,
