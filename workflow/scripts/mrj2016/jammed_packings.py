@@ -20,7 +20,7 @@ from randmedia.io import read_dataset, write_csv
 
 records = []
 for path, certificate in zip(snakemake.input.samples, snakemake.input.certificates, strict=True):
-    dataset = read_dataset(path, attrs=PACKING_ATTRS + ("diameter", "cpu_seconds"))
+    dataset = read_dataset(path, attrs=PACKING_ATTRS + ("cpu_seconds",))
     certified = certified_from_ladder(pd.read_csv(certificate).to_dict("records"))
     log.info("%s: jammed at the configured gap tolerance: %d; certified from %g", path,
              dataset.attrs["jammed"], certified)
