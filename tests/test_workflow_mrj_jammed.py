@@ -147,12 +147,14 @@ def test_each_packing_has_its_certificate(jammed_run, section):
         assert first["min_force_ratio"] > 0 and first["cpu_seconds"] > 0
 
 
-def test_every_packing_is_kept_and_taken_back_instead_of_regenerated(jammed_run, section, tmp_path):
+def test_every_packing_and_its_certificate_are_kept_and_taken_back(jammed_run, section, tmp_path):
     """Each packing job keeps a copy beside the record (here the quick config's
-    {results}/record/packings/mrj2016/ when certified, .../mrj2016_uncertified/ otherwise); a job
-    on a machine without results/ takes it back (same seed and configuration) instead of making
-    the packing again."""
+    {results}/record/packings/mrj2016/ when certified, .../mrj2016_uncertified/ otherwise), and
+    each certificate job keeps its ladder beside it (randmedia.kept_certificates); a job on a
+    machine without results/ takes both back (same seed and configuration; same packing, contact
+    options and code) instead of making them again."""
     from conftest import copy_workflow
+    from randmedia.kept_certificates import kept_certificate_path
     from randmedia.kept_configurations import kept_path, unfinished_dir
 
     keep_dir = f"{QUICK_RESULTS}/record/packings/mrj2016"
@@ -165,13 +167,21 @@ def test_every_packing_is_kept_and_taken_back_instead_of_regenerated(jammed_run,
         assert not (jammed_run / kept_path(other, system, k)).exists()
         # the checkpoints kept while it ran are gone once it is made
         assert not (jammed_run / unfinished_dir(keep_dir, system)).exists()
+        kept_certificate = json.loads((jammed_run / kept_certificate_path(folder, system, k)).read_text())
+        certificate = pd.read_csv(path.with_name(f"sample{k}.certificate.csv"))
+        assert pd.DataFrame(kept_certificate["ladder"]).equals(certificate)
+        assert kept_certificate["key"]["contacts"] == section["contacts"]
     fresh = copy_workflow(tmp_path / "fresh")
-    target = kept_path(keep_dir, "mrj", 0)
-    (fresh / target).parent.mkdir(parents=True)
-    (fresh / target).write_bytes((jammed_run / target).read_bytes())
+    for target in (kept_path(keep_dir, "mrj", 0), kept_certificate_path(keep_dir, "mrj", 0)):
+        (fresh / target).parent.mkdir(parents=True, exist_ok=True)
+        (fresh / target).write_bytes((jammed_run / target).read_bytes())
     output = f"{QUICK_RESULTS}/mrj2016/configs/mrj/sample0.nc"
-    result = run_snakemake(fresh, output, "--cores", "1", "--configfile", "config/quick.yaml")
+    certificate = output.removesuffix(".nc") + ".certificate.csv"
+    result = run_snakemake(fresh, certificate, "--cores", "1", "--configfile", "config/quick.yaml")
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-5000:]
     log = (fresh / f"{QUICK_RESULTS}/mrj2016/logs/jammed_mrj_sample0.log").read_text()
     assert "taken from the kept copy" in log
     assert read_dataset(fresh / output).identical(read_dataset(jammed_run / output))
+    log = (fresh / f"{QUICK_RESULTS}/mrj2016/logs/packing_certificate_mrj_sample0.log").read_text()
+    assert "taken from the kept certificate" in log
+    assert (fresh / certificate).read_bytes() == (jammed_run / certificate).read_bytes()

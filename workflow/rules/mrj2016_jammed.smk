@@ -92,6 +92,9 @@ rule mrj2016_packing_certificate:
         system="|".join(MRJ_JAMMED_SYSTEMS),
     params:
         contacts=lambda wildcards: mrj_stage(MRJ_JAMMED, wildcards.system, "contacts"),
+        # the ladder is kept beside the kept packing and taken back for the same packing,
+        # contact options and code (randmedia.kept_certificates)
+        keep_dir=lambda wildcards: mrj_keep_dir(wildcards.system),
     benchmark:
         results_path("mrj2016/benchmarks/packing_certificate_{system}_sample{k}.tsv")
     log:

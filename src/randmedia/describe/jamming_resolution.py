@@ -30,12 +30,13 @@ LADDER_COLUMNS = ("gap_tolerance", "n_pairs", "n_backbone", "isostatic_excess", 
 
 
 def _ladder_tolerances(gap_tolerance: float, max_tolerance: float, first_rung: int) -> list[float]:
-    """``gap_tolerance x 10^m`` for m = ``first_rung`` ... while <= ``max_tolerance``."""
+    """``gap_tolerance x 10^m`` for m = ``first_rung`` ... while <= ``max_tolerance``, each
+    rounded to 12 significant digits (1e-9 x 10^2 is 1e-07, not 1.0000000000000001e-07)."""
     if not 0 < gap_tolerance <= max_tolerance < 0.1:
         raise ValueError(f"need 0 < gap_tolerance ({gap_tolerance}) <= max_tolerance "
                          f"({max_tolerance}) < 0.1 D")
     steps = int(math.floor(math.log10(max_tolerance / gap_tolerance) + 1e-9))
-    return [gap_tolerance * 10.0 ** m for m in range(first_rung, steps + 1)]
+    return [float(f"{gap_tolerance * 10.0 ** m:.12g}") for m in range(first_rung, steps + 1)]
 
 
 def gap_ladder(positions, box, diameter: float = 1.0, *, gap_tolerance: float = 1e-9,

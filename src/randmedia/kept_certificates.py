@@ -1,0 +1,86 @@
+"""The jamming certificates of kept packings, kept beside them and taken back instead of recomputed.
+
+A packing's certificate (rule ``mrj2016_packing_certificate``: the contact-gap ladder of
+:func:`randmedia.describe.jamming_resolution.gap_ladder`) is a function of the packing's
+coordinates, the contact options and the code of the test, nothing else. It costs ~9 CPU s at
+N = 2000 but ~45 CPU min for an uncertified packing of N = 10 000 (two rungs with cone LPs and
+rank checks on ~30 000 contacts), and a new machine starts without ``results/``. So each
+certificate job of a kept packing (:mod:`randmedia.kept_configurations`) keeps its ladder beside
+the packing, as ``sample{k}.certificate.json``, with the key it was computed from
+(:func:`certificate_key`):
+
+- ``packing_sha256``: SHA-256 of the centres, the cell and the diameter (float64 bytes);
+- ``contacts``: the contact options passed to the test;
+- ``code_sha256``: SHA-256 of the package modules the certificate job runs (the rule's input
+  ``code``), so any change to the test's code (or to a module it imports) recomputes it.
+
+A later job takes the ladder back only when all three are equal (:func:`kept_ladder`); any
+difference, or an unreadable file, recomputes it and replaces the kept file.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+from collections.abc import Iterable, Mapping
+from pathlib import Path
+
+import numpy as np
+
+from randmedia.io import atomic_output
+
+__all__ = ["certificate_key", "keep_ladder", "kept_certificate_path", "kept_ladder"]
+
+
+def kept_certificate_path(keep_dir: str | os.PathLike, system: str, index: int) -> Path:
+    """Where the certificate of sample ``index`` of ``system`` is kept under ``keep_dir``:
+    beside the kept packing ``sample{index}.nc``."""
+    return Path(keep_dir) / system / f"sample{int(index)}.certificate.json"
+
+
+def _module_name(path: Path) -> str:
+    """``path`` from its package directory on (``randmedia/describe/jamming.py``), so that the
+    key does not depend on where the checkout lies."""
+    parts = path.parts
+    return "/".join(parts[parts.index("randmedia"):]) if "randmedia" in parts else path.name
+
+
+def certificate_key(positions, box, diameter: float, contacts: Mapping,
+                    code: Iterable[str | os.PathLike]) -> dict:
+    """The key of a certificate (module docstring): packing hash, contact options, code hash."""
+    packing = hashlib.sha256()
+    for array in (positions, box, [diameter]):
+        packing.update(np.ascontiguousarray(array, dtype=np.float64).tobytes())
+    sources = hashlib.sha256()
+    for path in sorted((Path(p) for p in code), key=_module_name):
+        sources.update(_module_name(path).encode() + b"\0" + path.read_bytes() + b"\0")
+    return {"packing_sha256": packing.hexdigest(),
+            "contacts": json.loads(json.dumps(dict(contacts), sort_keys=True)),
+            "code_sha256": sources.hexdigest()}
+
+
+def kept_ladder(path: str | os.PathLike, key: Mapping) -> list[dict] | None:
+    """The ladder kept in ``path`` if it was computed with ``key``; None if there is none, it
+    cannot be read, or its key differs."""
+    try:
+        kept = json.loads(Path(path).read_text())
+        return list(kept["ladder"]) if kept["key"] == dict(key) else None
+    except (OSError, ValueError, KeyError, TypeError):
+        return None
+
+
+def _plain(value):
+    """numpy scalars as Python numbers (for json)."""
+    if isinstance(value, np.generic):
+        return value.item()
+    raise TypeError(f"not JSON serializable: {type(value).__name__}")
+
+
+def keep_ladder(path: str | os.PathLike, key: Mapping, ladder: list[Mapping]) -> Path:
+    """Write ``ladder`` with its ``key`` to ``path``, atomically."""
+    path = Path(path)
+    with atomic_output(path) as tmp:
+        tmp.write_text(json.dumps({"key": dict(key), "ladder": [dict(row) for row in ladder]},
+                                  indent=1, default=_plain) + "\n")
+    return path
