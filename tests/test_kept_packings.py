@@ -5,7 +5,11 @@ gap, carries its provenance, and was made with the paper config's current packin
 
 from __future__ import annotations
 
+import inspect
 import json
+import os
+import subprocess
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -13,7 +17,7 @@ import pytest
 import yaml
 
 from randmedia.config import MRJ_ROUTE_STAGES
-from randmedia.generate import PARTICLE_CONFIG, particle_config_dataset
+from randmedia.generate import PARTICLE_CONFIG
 from randmedia.generate.jammed import packing_fraction
 from randmedia.io import read_dataset
 from randmedia.periodic import Cell, min_pair_distance
@@ -66,6 +70,35 @@ def test_an_uncertified_kept_packing_is_overlap_free_and_says_it_is_not_jammed(p
     assert json.loads(ds.attrs["config_json"])["n_particles"] == positions.shape[0]
 
 
+CERTIFICATES = sorted((REPO / "record" / "packings").glob("mrj2016*/*/sample*.certificate.json"))
+
+
+@pytest.mark.skipif(not CERTIFICATES, reason="no certificates kept yet")
+@pytest.mark.parametrize("path", CERTIFICATES, ids=[f"{p.parent.parent.name}/{p.parent.name}/{p.stem}"
+                                                    for p in CERTIFICATES])
+def test_a_kept_certificate_belongs_to_the_packing_beside_it(path):
+    """A kept certificate (randmedia.kept_certificates) was computed from the packing kept beside
+    it, with the configured contact options; its ladder starts at the configured gap with the
+    packing's stored outcome and ends at the first pass (certified packings: the first rung)."""
+    from randmedia.describe.jamming_resolution import gap_ladder
+    from randmedia.kept_certificates import certificate_key
+
+    ds = read_dataset(path.with_name(path.name.replace(".certificate.json", ".nc")), PARTICLE_CONFIG,
+                      attrs=("jammed",))
+    kept = json.loads(path.read_text())
+    packing = certificate_key(ds["position"].values, ds["box"].values, float(ds.attrs["diameter"]),
+                              {}, [])["packing_sha256"]
+    assert kept["key"]["packing_sha256"] == packing
+    assert kept["key"]["contacts"] == SECTION["contacts"]
+    ladder = kept["ladder"]
+    assert ladder[0]["gap_tolerance"] == SECTION["contacts"]["gap_tolerance"]
+    assert ladder[0]["jammed"] == bool(int(ds.attrs["jammed"])) == (path.parent.parent.name == "mrj2016")
+    assert [row["jammed"] for row in ladder[:-1]] == [False] * (len(ladder) - 1)
+    # not certified: the ladder went up to its last rung (gap_ladder's max_tolerance)
+    last_rung = inspect.signature(gap_ladder).parameters["max_tolerance"].default
+    assert ladder[-1]["jammed"] or ladder[-1]["gap_tolerance"] == last_rung
+
+
 QUICK_PACKING = REPO / "tests" / "data" / "mrj2016_quick_mrj_sample0.nc"
 
 
@@ -79,25 +112,46 @@ def _cpu_model() -> str | None:
     return None
 
 
-def test_a_kept_quick_packing_is_regenerated_bit_for_bit_from_its_seed():
+#: the OpenBLAS kernels the kept quick packing was made with (its .json), forced for its regeneration
+BLAS_KERNELS = "Haswell"
+
+_REGENERATE = """
+import json, sys
+import numpy as np
+from randmedia.generate import PARTICLE_CONFIG, particle_config_dataset
+from randmedia.generate.mrj import MRJProtocol, make_packing
+from randmedia.io import read_dataset
+ds = read_dataset(sys.argv[1], PARTICLE_CONFIG)
+config = json.loads(ds.attrs["config_json"])
+packing = make_packing(int(ds.attrs["seed"]), config["n_particles"], MRJProtocol.from_config(config))
+# as the packing rule writes it (positions wrapped into the cell by the file contract)
+again = particle_config_dataset(packing.positions, packing.box, packing.diameter, {})
+np.savez(sys.argv[2], position=again["position"].values, box=again["box"].values)
+"""
+
+
+def test_a_kept_quick_packing_is_regenerated_bit_for_bit_from_its_seed(tmp_path):
     """The quick config's sample 0 (tests/data, made by the packing rule with the route then
     configured) is made again from the seed and configuration it records: the same positions
-    and cell to the last bit, on any CPU. The BLAS libraries pick kernels by CPU, so this was
-    first claimed only on the CPU model that made the file (AMD EPYC); regenerated on an Intel
-    Xeon with AVX-512 (2026-12-05) it was identical too, 396 LPs, and forcing OpenBLAS' Haswell
-    kernels there (OPENBLAS_CORETYPE) changed it (432 LPs): so the defaults give the same bits
-    on both CPU kinds seen here (the .json lists them). A CPU on which it fails is a finding
-    to report, not a case to skip."""
-    from randmedia.generate.mrj import MRJProtocol, make_packing
-
+    and cell to the last bit, on any x86-64 CPU with AVX2, given the same BLAS kernels. OpenBLAS
+    picks its kernels by CPU, and the LP trajectory is chaotic in the last bit: from one seed,
+    AVX-512 kernels (an AMD EPYC with them, an Intel Xeon) made 396 LPs, the Haswell kernels 432
+    (forced on that Xeon, and the default on an AMD EPYC without AVX-512, 2026-12-07), the
+    Prescott kernels 387. So the packing is kept as made with the Haswell kernels (OPENBLAS_CORETYPE,
+    the .json), which every AVX2 CPU runs, and regenerated with them in a fresh process (the
+    variable is read when OpenBLAS loads). A CPU on which it fails is a finding to report, not a
+    case to skip."""
     provenance = json.loads(QUICK_PACKING.with_suffix(".json").read_text())
+    assert provenance["openblas_coretype"] == BLAS_KERNELS
+    output = tmp_path / "again.npz"
+    result = subprocess.run([sys.executable, "-c", _REGENERATE, str(QUICK_PACKING), str(output)],
+                            env={**os.environ, "OPENBLAS_CORETYPE": BLAS_KERNELS},
+                            capture_output=True, text=True)
+    assert result.returncode == 0, result.stderr[-3000:]
+    again = np.load(output)
     ds = read_dataset(QUICK_PACKING, PARTICLE_CONFIG)
-    config = json.loads(ds.attrs["config_json"])
-    packing = make_packing(int(ds.attrs["seed"]), config["n_particles"], MRJProtocol.from_config(config))
-    # as the packing rule writes it (positions wrapped into the cell by the file contract)
-    again = particle_config_dataset(packing.positions, packing.box, packing.diameter, {})
-    same = (np.array_equal(again["position"].values, ds["position"].values)
-            and np.array_equal(again["box"].values, ds["box"].values))
-    assert same, (f"regenerated packing differs on {_cpu_model()!r} (made on {provenance['cpu_model']!r}, "
-                  f"identical on {provenance['identical_on']}): max |dx| = "
-                  f"{np.abs(again['position'].values - ds['position'].values).max():.3g} D")
+    same = (np.array_equal(again["position"], ds["position"].values)
+            and np.array_equal(again["box"], ds["box"].values))
+    assert same, (f"regenerated packing differs on {_cpu_model()!r} with the {BLAS_KERNELS} kernels (made on "
+                  f"{provenance['cpu_model']!r}, identical on {provenance['identical_on']}): max |dx| = "
+                  f"{np.abs(again['position'] - ds['position'].values).max():.3g} D")
