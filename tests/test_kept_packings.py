@@ -27,6 +27,12 @@ KEPT = sorted((REPO / "record" / "packings" / "mrj2016").glob("*/sample*.nc"))
 SECTION = yaml.safe_load((REPO / "config" / "config.yaml").read_text())["mrj2016"]["mrj"]
 
 
+def _system_stage(system: str, stage: str) -> dict:
+    """The config's ``stage`` keys as ``system``'s packings use them: its own keys over the
+    shared ones (mrj_stage, workflow/rules/common.smk)."""
+    return {**SECTION[stage], **SECTION[system].get(stage, {})}
+
+
 @pytest.mark.skipif(not KEPT, reason="no packings kept in record/packings/mrj2016 yet")
 @pytest.mark.parametrize("path", KEPT, ids=[f"{p.parent.name}/{p.stem}" for p in KEPT])
 def test_a_kept_packing_is_certified_and_made_with_the_paper_config(path):
@@ -46,9 +52,8 @@ def test_a_kept_packing_is_certified_and_made_with_the_paper_config(path):
     route = system.get("route", SECTION["route"])  # mrj_md's own route (workflow/rules/common.smk)
     assert made_with["route"] == route
     for stage in ("polish", "contacts") + MRJ_ROUTE_STAGES[route]:
-        # a system's own stage keys over the shared ones (workflow/rules/common.smk)
-        wanted = {**SECTION[stage], **system.get(stage, {})}
-        assert made_with[stage] == wanted, f"{path}: {stage} differs from config/config.yaml"
+        assert made_with[stage] == _system_stage(path.parent.name, stage), \
+            f"{path}: {stage} differs from config/config.yaml"
     assert np.isfinite(positions).all()
 
 
@@ -89,8 +94,7 @@ def test_a_kept_certificate_belongs_to_the_packing_beside_it(path):
     packing = certificate_key(ds["position"].values, ds["box"].values, float(ds.attrs["diameter"]),
                               {}, [])["packing_sha256"]
     assert kept["key"]["packing_sha256"] == packing
-    # a system's own contact keys over the shared ones (mrj_large: its rank tolerance)
-    contacts = {**SECTION["contacts"], **SECTION[path.parent.name].get("contacts", {})}
+    contacts = _system_stage(path.parent.name, "contacts")  # mrj_large: its own rank tolerance
     assert kept["key"]["contacts"] == contacts
     ladder = kept["ladder"]
     assert ladder[0]["gap_tolerance"] == contacts["gap_tolerance"]

@@ -37,6 +37,8 @@ if rows is not None:
              "not recomputed", kept)
 else:
     rows = gap_ladder(positions, box, diameter, **contacts)
+    if kept:
+        keep_ladder(kept, key, rows)
 for row in rows:
     log.info("gap tolerance %g D: %d pairs, backbone %d spheres, isostatic excess %s, min Tr eps %s, "
              "min force / mean %s, rank ratio %s: jammed %s (%.1f CPU s)", row["gap_tolerance"],
@@ -47,5 +49,3 @@ if rows[0]["jammed"] != stored_jammed:
               snakemake.input.packing, contacts["gap_tolerance"], rows[0]["jammed"], stored_jammed)
 log.info("certified gap tolerance: %g D", certified_from_ladder(rows))
 write_csv(pd.DataFrame(rows, columns=list(LADDER_COLUMNS)), snakemake.output[0])
-if kept:
-    keep_ladder(kept, key, rows)
