@@ -7,7 +7,8 @@ import pandas as pd
 
 from randmedia.describe import bond_order
 from randmedia.describe.jamming_resolution import LADDER_COLUMNS, gap_ladder
-from randmedia.kept_certificates import certificate_key, keep_ladder, kept_certificate_path, kept_ladder
+from randmedia.kept_certificates import (certificate_key, keep_ladder, kept_certificate_path, kept_ladder,
+                                         ladder_sources)
 
 CONTACTS = {"gap_tolerance": 1e-9, "max_tolerance": 1e-4}
 
@@ -59,3 +60,26 @@ def test_an_unreadable_kept_certificate_is_not_taken_back_and_is_replaced(tmp_pa
     assert kept_ladder(path, key) == [{"gap_tolerance": 1e-9, "n_pairs": 3, "min_trace": -1.5,
                                        "jammed": False, "isostatic_excess": None}]
     assert not list(path.parent.glob(".*partial*"))  # written atomically, nothing left over
+
+
+def test_the_key_covers_the_code_of_the_test_and_not_the_jobs_plumbing():
+    """ladder_sources: the jamming test's modules (and what they import), not the modules that
+    read, log or keep (editing those cannot change a ladder, so it keeps the kept ladders)."""
+    names = {"/".join(path.parts[-2:]) for path in ladder_sources()}
+    assert {"describe/jamming_resolution.py", "describe/jamming.py", "generate/packing_lp.py",
+            "randmedia/periodic.py"} <= names
+    assert not names & {"randmedia/jobs.py", "randmedia/kept_certificates.py",
+                        "randmedia/kept_configurations.py", "randmedia/workflow_sources.py"}
+
+
+def test_an_uncertified_packing_is_kept_in_the_uncertified_folder(tmp_path):
+    """A certificate is kept beside its packing: under keep_dir if certified, else under
+    keep_dir + UNCERTIFIED_SUFFIX (randmedia.kept_configurations.kept_path)."""
+    from randmedia.kept_configurations import kept_path
+
+    keep_dir = tmp_path / "packings" / "mrj2016"
+    for certified, folder in ((True, "mrj2016"), (False, "mrj2016_uncertified")):
+        packing = kept_path(keep_dir, "mrj_large", 0, certified=certified)
+        assert packing == tmp_path / "packings" / folder / "mrj_large" / "sample0.nc"
+        assert kept_certificate_path(str(keep_dir), "mrj_large", 0, certified=certified) == \
+            packing.with_name("sample0.certificate.json")

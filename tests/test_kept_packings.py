@@ -83,17 +83,23 @@ CERTIFICATES = sorted((REPO / "record" / "packings").glob("mrj2016*/*/sample*.ce
                                                     for p in CERTIFICATES])
 def test_a_kept_certificate_belongs_to_the_packing_beside_it(path):
     """A kept certificate (randmedia.kept_certificates) was computed from the packing kept beside
-    it, with the configured contact options; its ladder starts at the configured gap with the
-    packing's stored outcome and ends at the first pass (certified packings: the first rung)."""
+    it, with the configured contact options and the current code of the test (else a new machine
+    would recompute it: ~80 CPU min for the uncertified N = 10 000 packing); its ladder starts at
+    the configured gap with the packing's stored outcome and ends at the first pass (certified
+    packings: the first rung)."""
     from randmedia.describe.jamming_resolution import gap_ladder
-    from randmedia.kept_certificates import certificate_key
+    from randmedia.kept_certificates import certificate_key, ladder_sources
 
     ds = read_dataset(path.with_name(path.name.replace(".certificate.json", ".nc")), PARTICLE_CONFIG,
                       attrs=("jammed",))
     kept = json.loads(path.read_text())
-    packing = certificate_key(ds["position"].values, ds["box"].values, float(ds.attrs["diameter"]),
-                              {}, [])["packing_sha256"]
-    assert kept["key"]["packing_sha256"] == packing
+    current = certificate_key(ds["position"].values, ds["box"].values, float(ds.attrs["diameter"]),
+                              {}, ladder_sources())
+    assert kept["key"]["packing_sha256"] == current["packing_sha256"]
+    assert kept["key"]["code_sha256"] == current["code_sha256"], (
+        f"{path.relative_to(REPO)} was computed by other code of the jamming test: rerun its "
+        f"certificate job (snakemake --cores 1 -- results/mrj2016/configs/{path.parent.name}/"
+        f"{path.name.replace('.json', '.csv')}) and commit the file it rewrites")
     contacts = _system_stage(path.parent.name, "contacts")  # mrj_large: its own rank tolerance
     assert kept["key"]["contacts"] == contacts
     ladder = kept["ladder"]

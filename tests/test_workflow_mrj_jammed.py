@@ -160,14 +160,14 @@ def test_every_packing_and_its_certificate_are_kept_and_taken_back(jammed_run, s
     keep_dir = f"{QUICK_RESULTS}/record/packings/mrj2016"
     for system, k, path in packing_files(jammed_run, section):
         made = read_dataset(path)
-        folder = keep_dir if int(made.attrs["jammed"]) else keep_dir + "_uncertified"
-        kept = read_dataset(jammed_run / kept_path(folder, system, k))
+        certified = bool(int(made.attrs["jammed"]))
+        kept = read_dataset(jammed_run / kept_path(keep_dir, system, k, certified=certified))
         assert kept.identical(made)
-        other = keep_dir + "_uncertified" if folder == keep_dir else keep_dir
-        assert not (jammed_run / kept_path(other, system, k)).exists()
+        assert not (jammed_run / kept_path(keep_dir, system, k, certified=not certified)).exists()
         # the checkpoints kept while it ran are gone once it is made
         assert not (jammed_run / unfinished_dir(keep_dir, system)).exists()
-        kept_certificate = json.loads((jammed_run / kept_certificate_path(folder, system, k)).read_text())
+        kept_certificate = json.loads(
+            (jammed_run / kept_certificate_path(keep_dir, system, k, certified=certified)).read_text())
         certificate = pd.read_csv(path.with_name(f"sample{k}.certificate.csv"))
         assert pd.DataFrame(kept_certificate["ladder"]).equals(certificate)
         # a system's own contact keys over the shared ones (mrj_large: its rank tolerance)

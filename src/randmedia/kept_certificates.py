@@ -11,8 +11,10 @@ the packing, as ``sample{k}.certificate.json``, with the key it was computed fro
 
 - ``packing_sha256``: SHA-256 of the centres, the cell and the diameter (float64 bytes);
 - ``contacts``: the contact options passed to the test;
-- ``code_sha256``: SHA-256 of the package modules the certificate job runs (the rule's input
-  ``code``), so any change to the test's code (or to a module it imports) recomputes it.
+- ``code_sha256``: SHA-256 of the package modules that compute the ladder
+  (:func:`ladder_sources`: :mod:`randmedia.describe.jamming_resolution` and every module it
+  imports), so any change to the test's code recomputes it, and a change to the job's
+  reading, writing, logging or keeping (which cannot change a ladder) does not.
 
 A later job takes the ladder back only when all three are equal (:func:`kept_ladder`); any
 difference, or an unreadable file, recomputes it and replaces the kept file.
@@ -28,15 +30,30 @@ from pathlib import Path
 
 import numpy as np
 
+import randmedia
+from randmedia.describe import jamming_resolution
 from randmedia.io import atomic_output
+from randmedia.kept_configurations import kept_path
+from randmedia.workflow_sources import script_sources
 
-__all__ = ["certificate_key", "keep_ladder", "kept_certificate_path", "kept_ladder"]
+__all__ = ["certificate_key", "keep_ladder", "kept_certificate_path", "kept_ladder", "ladder_sources"]
 
 
-def kept_certificate_path(keep_dir: str | os.PathLike, system: str, index: int) -> Path:
-    """Where the certificate of sample ``index`` of ``system`` is kept under ``keep_dir``:
-    beside the kept packing ``sample{index}.nc``."""
-    return Path(keep_dir) / system / f"sample{int(index)}.certificate.json"
+def kept_certificate_path(keep_dir: str | os.PathLike, system: str, index: int, *,
+                          certified: bool = True) -> Path:
+    """Where the certificate of sample ``index`` of ``system`` is kept: beside the kept packing
+    ``sample{index}.nc`` (:func:`randmedia.kept_configurations.kept_path`: under ``keep_dir``
+    if the packing is certified, under the uncertified folder otherwise)."""
+    return kept_path(keep_dir, system, index, certified=certified).with_name(
+        f"sample{int(index)}.certificate.json")
+
+
+def ladder_sources() -> list[Path]:
+    """The package modules that compute a ladder: ``randmedia/describe/jamming_resolution.py``
+    and the transitive closure of its imports of the package
+    (:func:`randmedia.workflow_sources.script_sources`) -- the ``code`` of a kept key."""
+    module = Path(jamming_resolution.__file__)
+    return [module, *script_sources(module, Path(randmedia.__file__).parent)]
 
 
 def _module_name(path: Path) -> str:

@@ -32,7 +32,7 @@ from pathlib import Path
 
 from randmedia.io import DataFileError, atomic_output, read_dataset
 
-__all__ = ["RUN_ONLY_KEYS", "CheckpointKeeper", "kept_path", "keep", "matching_kept", "unfinished_dir"]
+__all__ = ["RUN_ONLY_KEYS", "UNCERTIFIED_SUFFIX", "CheckpointKeeper", "kept_path", "keep", "matching_kept", "unfinished_dir"]
 
 #: config keys that steer how a job runs, not what it makes
 RUN_ONLY_KEYS = ("checkpoint_seconds", "keep_dir")
@@ -42,9 +42,18 @@ def _packing_config(config: Mapping) -> dict:
     return {key: value for key, value in config.items() if key not in RUN_ONLY_KEYS}
 
 
-def kept_path(keep_dir: str | os.PathLike, system: str, index: int) -> Path:
-    """Where sample ``index`` of ``system`` is kept under ``keep_dir``."""
-    return Path(keep_dir) / system / f"sample{int(index)}.nc"
+#: appended to ``keep_dir`` for the folder of the packings that are not certified strictly jammed
+UNCERTIFIED_SUFFIX = "_uncertified"
+
+
+def kept_path(keep_dir: str | os.PathLike, system: str, index: int, *, certified: bool = True) -> Path:
+    """Where sample ``index`` of ``system`` is kept: under ``keep_dir`` if it is certified
+    strictly jammed, under ``keep_dir`` + :data:`UNCERTIFIED_SUFFIX` otherwise (counted beside
+    the record's packings, never in their place)."""
+    folder = Path(keep_dir)
+    if not certified:
+        folder = folder.with_name(folder.name + UNCERTIFIED_SUFFIX)
+    return folder / system / f"sample{int(index)}.nc"
 
 
 def matching_kept(path: str | os.PathLike, seed: int, config: Mapping) -> bool:

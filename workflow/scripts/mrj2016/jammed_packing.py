@@ -57,9 +57,9 @@ def make():
 
 
 # the copies kept beside the record (randmedia.kept_configurations): certified packings under
-# keep_dir, the others under keep_dir + "_uncertified"; one is taken back when it was made from
-# the same seed and configuration, whichever attempt made it
-kept = [kept_path(folder, system, index) for folder in (params["keep_dir"], params["keep_dir"] + "_uncertified")] \
+# keep_dir, the others in its uncertified folder; one is taken back when it was made from the
+# same seed and configuration, whichever attempt made it
+kept = [kept_path(params["keep_dir"], system, index, certified=certified) for certified in (True, False)] \
     if params["keep_dir"] else []
 found = next((path for path in kept if any(matching_kept(path, seed, config) for seed in seeds)), None)
 if found is not None:

@@ -9,7 +9,8 @@ at N = 10 000 an uncertified packing's ladder costs ~40 CPU min (two cone LPs an
 ~30 000 contacts), which then runs beside the other packings' jobs instead of inside the
 summary table's. The ladder of a kept packing is kept beside it with the key it was computed
 from (randmedia.kept_certificates) and taken back when the packing, the contact options and the
-code are the same, so a new machine rebuilds the record without recomputing it.
+code that computes the ladder are the same, so a new machine rebuilds the record without
+recomputing it.
 """
 from randmedia.jobs import start_job
 
@@ -19,18 +20,18 @@ import pandas as pd
 
 from randmedia.describe.jamming_resolution import LADDER_COLUMNS, certified_from_ladder, gap_ladder
 from randmedia.io import read_dataset, write_csv
-from randmedia.kept_certificates import certificate_key, keep_ladder, kept_certificate_path, kept_ladder
+from randmedia.kept_certificates import (certificate_key, keep_ladder, kept_certificate_path, kept_ladder,
+                                         ladder_sources)
 
 contacts = dict(snakemake.params.contacts)
 dataset = read_dataset(snakemake.input.packing, attrs=("diameter", "jammed"))
 positions, box, diameter = dataset["position"].values, dataset["box"].values, float(dataset.attrs["diameter"])
 stored_jammed = bool(dataset.attrs["jammed"])
-# kept beside the kept packing (randmedia.kept_certificates): under keep_dir if it is certified,
-# keep_dir + "_uncertified" otherwise, as the packing rule keeps it
+# kept beside the kept packing (randmedia.kept_certificates)
 keep_dir = snakemake.params.keep_dir
-kept = kept_certificate_path(keep_dir + ("" if stored_jammed else "_uncertified"), snakemake.wildcards.system,
-                             int(snakemake.wildcards.k)) if keep_dir else None
-key = certificate_key(positions, box, diameter, contacts, snakemake.input.code)
+kept = kept_certificate_path(keep_dir, snakemake.wildcards.system, int(snakemake.wildcards.k),
+                             certified=stored_jammed) if keep_dir else None
+key = certificate_key(positions, box, diameter, contacts, ladder_sources())
 rows = kept_ladder(kept, key) if kept else None
 if rows is not None:
     log.info("ladder taken from the kept certificate %s (same packing, contact options and code): "
