@@ -98,7 +98,7 @@ def test_a_kept_certificate_belongs_to_the_packing_beside_it(path):
     assert kept["key"]["packing_sha256"] == current["packing_sha256"]
     assert kept["key"]["code_sha256"] == current["code_sha256"], (
         f"{path.relative_to(REPO)} was computed by other code of the jamming test: rerun its "
-        f"certificate job (snakemake --cores 1 -- results/mrj2016/configs/{path.parent.name}/"
+        f"certificate job (snakemake --cores 1 --force -- results/mrj2016/configs/{path.parent.name}/"
         f"{path.name.replace('.json', '.csv')}) and commit the file it rewrites")
     contacts = _system_stage(path.parent.name, "contacts")  # mrj_large: its own rank tolerance
     assert kept["key"]["contacts"] == contacts
