@@ -16,21 +16,17 @@ import numpy as np
 import pytest
 import yaml
 
+from randmedia.blas_kernels import PINNED_KERNELS
 from randmedia.config import MRJ_ROUTE_STAGES
 from randmedia.generate import PARTICLE_CONFIG
 from randmedia.generate.jammed import packing_fraction
 from randmedia.io import read_dataset
+from randmedia.mrj_stages import system_stage
 from randmedia.periodic import Cell, min_pair_distance
 
 REPO = Path(__file__).resolve().parents[1]
 KEPT = sorted((REPO / "record" / "packings" / "mrj2016").glob("*/sample*.nc"))
 SECTION = yaml.safe_load((REPO / "config" / "config.yaml").read_text())["mrj2016"]["mrj"]
-
-
-def _system_stage(system: str, stage: str) -> dict:
-    """The config's ``stage`` keys as ``system``'s packings use them: its own keys over the
-    shared ones (mrj_stage, workflow/rules/common.smk)."""
-    return {**SECTION[stage], **SECTION[system].get(stage, {})}
 
 
 @pytest.mark.skipif(not KEPT, reason="no packings kept in record/packings/mrj2016 yet")
@@ -48,11 +44,11 @@ def test_a_kept_packing_is_certified_and_made_with_the_paper_config(path):
     assert float(ds.attrs["gap_tolerance"]) == SECTION["contacts"]["gap_tolerance"]
     assert int(ds.attrs["isostatic_excess"]) == 0
     made_with = json.loads(ds.attrs["config_json"])
-    system = SECTION[path.parent.name]
-    route = system.get("route", SECTION["route"])  # mrj_md's own route (workflow/rules/common.smk)
+    system = path.parent.name
+    route = system_stage(SECTION, system, "route")  # mrj_md's own route
     assert made_with["route"] == route
     for stage in ("polish", "contacts") + MRJ_ROUTE_STAGES[route]:
-        assert made_with[stage] == _system_stage(path.parent.name, stage), \
+        assert made_with[stage] == system_stage(SECTION, system, stage), \
             f"{path}: {stage} differs from config/config.yaml"
     assert np.isfinite(positions).all()
 
@@ -100,7 +96,7 @@ def test_a_kept_certificate_belongs_to_the_packing_beside_it(path):
         f"{path.relative_to(REPO)} was computed by other code of the jamming test: rerun its "
         f"certificate job (snakemake --cores 1 --force -- results/mrj2016/configs/{path.parent.name}/"
         f"{path.name.replace('.json', '.csv')}) and commit the file it rewrites")
-    contacts = _system_stage(path.parent.name, "contacts")  # mrj_large: its own rank tolerance
+    contacts = system_stage(SECTION, path.parent.name, "contacts")  # mrj_large: its own rank tolerance
     assert kept["key"]["contacts"] == contacts
     ladder = kept["ladder"]
     assert ladder[0]["gap_tolerance"] == contacts["gap_tolerance"]
@@ -124,8 +120,9 @@ def _cpu_model() -> str | None:
     return None
 
 
-#: the OpenBLAS kernels the kept quick packing was made with (its .json), forced for its regeneration
-BLAS_KERNELS = "Haswell"
+#: the OpenBLAS kernels the kept quick packing was made with (its .json), forced for its
+#: regeneration: the ones the workflow pins for its jobs
+BLAS_KERNELS = PINNED_KERNELS
 
 _REGENERATE = """
 import json, sys

@@ -5,6 +5,7 @@ a record made from the quick run, and the committed record itself."""
 from __future__ import annotations
 
 import json
+import os
 import shutil
 from pathlib import Path
 
@@ -13,6 +14,7 @@ import pytest
 
 from conftest import QUICK_RESULTS, REPO, run_snakemake
 from randmedia import record
+from randmedia.blas_kernels import pin_blas_kernels
 from randmedia.compare import NOTE_COLUMNS
 
 PAPERS = record.PAPERS
@@ -160,6 +162,8 @@ def test_quick_run_record_is_consistent(quick_record, quick_run, paper):
     # debye3d has no tables but its comparison
     assert (folder / "tables").is_dir() == (paper != "debye3d") and info["jobs_with_benchmark"] > 0
     assert info["cpu_seconds_summed"] > 0
+    # the jobs ran with the OpenBLAS kernels the workflow pins (common.smk)
+    assert info["machine"]["openblas_coretype"] == pin_blas_kernels(dict(os.environ))
     status = record.status_table(quick_record).set_index("paper")
     assert status.loc[paper, "passed"] == info["comparison"]["passed"]
     assert f"[{paper}]({paper}/comparison.csv)" in (quick_record / "README.md").read_text()

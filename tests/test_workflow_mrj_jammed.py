@@ -12,6 +12,7 @@ from conftest import QUICK_RESULTS, quick_config, run_snakemake
 from randmedia.describe import jamming
 from randmedia.generate import PARTICLE_CONFIG
 from randmedia.io import read_dataset
+from randmedia.mrj_stages import system_stage
 from randmedia.periodic import Cell, pairs_within
 
 pytestmark = pytest.mark.workflow
@@ -83,7 +84,7 @@ def test_a_system_polishes_with_its_own_solver(jammed_run, section):
     for system, k, path in packing_files(jammed_run, section):
         made_with = json.loads(read_dataset(path).attrs["config_json"])
         for stage in ("polish", "contacts"):
-            assert made_with[stage] == {**section[stage], **section[system].get(stage, {})}
+            assert made_with[stage] == system_stage(section, system, stage)
 
 
 def test_md_like_packings_are_ls_compressions_at_their_own_rate(jammed_run, section):
@@ -171,7 +172,7 @@ def test_every_packing_and_its_certificate_are_kept_and_taken_back(jammed_run, s
         certificate = pd.read_csv(path.with_name(f"sample{k}.certificate.csv"))
         assert pd.DataFrame(kept_certificate["ladder"]).equals(certificate)
         # a system's own contact keys over the shared ones (mrj_large: its rank tolerance)
-        assert kept_certificate["key"]["contacts"] == {**section["contacts"], **section[system].get("contacts", {})}
+        assert kept_certificate["key"]["contacts"] == system_stage(section, system, "contacts")
     fresh = copy_workflow(tmp_path / "fresh")
     for target in (kept_path(keep_dir, "mrj", 0), kept_certificate_path(keep_dir, "mrj", 0)):
         (fresh / target).parent.mkdir(parents=True, exist_ok=True)

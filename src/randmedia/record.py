@@ -50,6 +50,7 @@ from typing import Iterable, Mapping
 import numpy as np
 import pandas as pd
 
+from randmedia import blas_kernels
 from randmedia.compare import NOTE_COLUMNS
 from randmedia.io import atomic_output, write_csv
 from randmedia.report import benchmark_summary
@@ -144,8 +145,11 @@ def installed_packages() -> dict[str, str]:
 
 
 def machine() -> dict:
-    """Platform, CPU model, logical CPUs (and the ones this process may use), memory."""
+    """Platform, CPU model, logical CPUs (and the ones this process may use), memory, and the
+    OpenBLAS kernels the jobs ran with (``OPENBLAS_CORETYPE``: randmedia.blas_kernels; None where
+    OpenBLAS chose them by CPU)."""
     info = {"platform": platform.platform(), "machine": platform.machine(),
+            "openblas_coretype": os.environ.get(blas_kernels.VARIABLE) or None,
             "logical_cpus": os.cpu_count(),
             "usable_cpus": len(os.sched_getaffinity(0)) if hasattr(os, "sched_getaffinity") else None,
             "cpu_model": platform.processor() or None, "memory_gib": None}

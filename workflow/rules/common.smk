@@ -5,6 +5,7 @@ import os
 import re
 from pathlib import Path
 
+from randmedia.blas_kernels import pin_blas_kernels
 from randmedia.workflow_sources import SourceError, numba_cache_dir as _numba_cache_dir, script_sources as _script_sources
 
 PACKAGE_DIR = Path(workflow.basedir) / "src" / "randmedia"
@@ -17,6 +18,10 @@ PACKAGE_DIR = Path(workflow.basedir) / "src" / "randmedia"
 # do not corrupt the cache.
 os.environ.setdefault("HDF5_USE_FILE_LOCKING", "FALSE")
 os.environ.setdefault("NUMBA_CACHE_DIR", str(_numba_cache_dir(PACKAGE_DIR, ".cache/numba")))
+# Every job runs with the same OpenBLAS kernels (Haswell on x86-64 CPUs with AVX2, unless
+# OPENBLAS_CORETYPE is set), so that a packing's LP trajectory, chaotic in the last bit, hence the
+# packing, is the same on every such CPU (randmedia.blas_kernels).
+pin_blas_kernels()
 
 #: where this run's outputs go (config key ``results_dir``): results/ for the paper config,
 #: results/quick/ for config/quick.yaml, so that a quick run never replaces (deletes) hours of
@@ -252,7 +257,8 @@ def sphere_descriptors(systems):
 
 # --------------------------------------------------------------------------- record (record.smk)
 
-from randmedia.config import MRJ_ROUTE_STAGES, load_config as _load_config, validate_config
+from randmedia.config import load_config as _load_config, validate_config
+from randmedia.mrj_stages import route_stage as mrj_route_stage, system_stage as mrj_stage
 from randmedia.record import paper_config as _paper_config
 
 #: the paper-fidelity configuration (config/config.yaml alone, defaults filled in)
@@ -272,24 +278,6 @@ def record_root(paper):
 
 #: what makes a packing (the rule's params but the run-only ones): the stages, contacts, order cutoff
 _PACKING_KEYS = ("route", "dilute", "compression", "inflation", "polish", "contacts", "bond_order_cutoff")
-
-
-def mrj_stage(section, system, key):
-    """``key`` of the config section ``section`` (mrj2016.mrj) as ``system``'s packings use it:
-    the shared value with the system's own keys of that name over it (mrj_large has its own
-    ``polish`` and ``contacts`` keys, mrj_md its own ``route`` and ``compression``:
-    workflow/schemas/mrj2016.jammed.schema.yaml)."""
-    own = section[system].get(key)
-    if isinstance(own, dict):
-        return {**section[key], **own}
-    return section[key] if own is None else own
-
-
-def mrj_route_stage(section, system, key):
-    """``system``'s ``key`` stage (mrj_stage) if its route runs that stage (randmedia.config's
-    MRJ_ROUTE_STAGES: a packing's params hold only these), {} otherwise."""
-    return (mrj_stage(section, system, key)
-            if key in MRJ_ROUTE_STAGES[mrj_stage(section, system, "route")] else {})
 
 
 # MRJ_JAMMED: defined in mrj2016_jammed.smk (read when the rule asks, after all includes)
