@@ -120,10 +120,6 @@ def _cpu_model() -> str | None:
     return None
 
 
-#: the OpenBLAS kernels the kept quick packing was made with (its .json), forced for its
-#: regeneration: the ones the workflow pins for its jobs
-BLAS_KERNELS = PINNED_KERNELS
-
 _REGENERATE = """
 import json, sys
 import numpy as np
@@ -147,20 +143,20 @@ def test_a_kept_quick_packing_is_regenerated_bit_for_bit_from_its_seed(tmp_path)
     AVX-512 kernels (an AMD EPYC with them, an Intel Xeon) made 396 LPs, the Haswell kernels 432
     (forced on that Xeon, and the default on an AMD EPYC without AVX-512, 2026-12-07), the
     Prescott kernels 387. So the packing is kept as made with the Haswell kernels (OPENBLAS_CORETYPE,
-    the .json), which every AVX2 CPU runs, and regenerated with them in a fresh process (the
+    the .json; the ones the workflow pins for its jobs, randmedia.blas_kernels), which every AVX2 CPU runs, and regenerated with them in a fresh process (the
     variable is read when OpenBLAS loads). A CPU on which it fails is a finding to report, not a
     case to skip."""
     provenance = json.loads(QUICK_PACKING.with_suffix(".json").read_text())
-    assert provenance["openblas_coretype"] == BLAS_KERNELS
+    assert provenance["openblas_coretype"] == PINNED_KERNELS
     output = tmp_path / "again.npz"
     result = subprocess.run([sys.executable, "-c", _REGENERATE, str(QUICK_PACKING), str(output)],
-                            env={**os.environ, "OPENBLAS_CORETYPE": BLAS_KERNELS},
+                            env={**os.environ, "OPENBLAS_CORETYPE": PINNED_KERNELS},
                             capture_output=True, text=True)
     assert result.returncode == 0, result.stderr[-3000:]
     again = np.load(output)
     ds = read_dataset(QUICK_PACKING, PARTICLE_CONFIG)
     same = (np.array_equal(again["position"], ds["position"].values)
             and np.array_equal(again["box"], ds["box"].values))
-    assert same, (f"regenerated packing differs on {_cpu_model()!r} with the {BLAS_KERNELS} kernels (made on "
+    assert same, (f"regenerated packing differs on {_cpu_model()!r} with the {PINNED_KERNELS} kernels (made on "
                   f"{provenance['cpu_model']!r}, identical on {provenance['identical_on']}): max |dx| = "
                   f"{np.abs(again['position'] - ds['position'].values).max():.3g} D")

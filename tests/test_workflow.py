@@ -182,8 +182,8 @@ def test_killed_one_core_run_leaves_no_partial_output_and_resumes_to_identical_d
     """Same config, 1 core instead of the fixture's 2, another folder, killed mid-run (SIGKILL,
     no clean-up) and finished by a second 1-core run: no output path ever holds a partial file,
     and every data variable of RESUMED_PAPERS' netCDF and CSV outputs (the run's targets: data and
-    tables, not figures or run times, 78 jobs of 102) equals the uninterrupted 2-core run's (one test, so CI runs part of the quick DAG a second time
-    only once)."""
+    tables, not figures or run times, 78 jobs of 102) equals the uninterrupted 2-core run's (one
+    test, so CI runs part of the quick DAG a second time only once)."""
     workdir = copy_workflow(tmp_path)
     targets = ([str(path.relative_to(quick_run)) for path in netcdf_files(quick_run, RESUMED_PAPERS)]
                + [str(path) for path in _result_tables(quick_run, RESUMED_PAPERS)])

@@ -4,8 +4,8 @@ every x86-64 CPU with AVX2.
 OpenBLAS (numpy's, and the one ``highspy-extras`` gives HiGHS' HiPO) picks its kernels by CPU
 when it loads, and the LP trajectory of an MRJ packing is chaotic in the last bit: from the quick
 packing's seed the AVX-512 kernels made 396 LPs, the Haswell kernels 432, the Prescott kernels 387
-(docs/mrj2016.md, *LP solver*). So the Snakefile pins the Haswell kernels, which every x86-64 CPU
-with AVX2 and FMA runs, for every job it starts (``OPENBLAS_CORETYPE``, read by OpenBLAS when it
+(docs/mrj2016.md, *LP solver*). So the workflow (workflow/rules/common.smk) pins the Haswell
+kernels, which every x86-64 CPU with AVX2 and FMA runs, for every job it starts (``OPENBLAS_CORETYPE``, read by OpenBLAS when it
 loads in the job's process). A value the user set is kept; on a CPU without AVX2 or FMA (or not
 x86-64) nothing is pinned and OpenBLAS chooses, so a packing made there is another draw of the
 same ensemble rather than the same packing.
